@@ -1,0 +1,33 @@
+# Student file sets: the six task files, each compiled as its own object library so that a set
+# can mix files (a submission with one file missing falls back to the starter's; a wrong
+# version replaces one file of the solution) without recompiling the others.
+
+set(A6_TASK_FILES spring forces time_stepping cloth particle_system joints)
+set(A6_WARNINGS -Wall -Wextra)
+
+# a6_student_set(<name> <dir> [STARTER] [FALLBACK <set>])
+#   Defines the object libraries a6_<name>_<file> for every task file found in <dir>; a file
+#   missing from <dir> is taken from the set FALLBACK (which must exist). Sets
+#   A6_<name>_OBJECTS (in the caller's scope) to the six object libraries of the set.
+#   STARTER: the stubs leave parameters unused on purpose; do not warn about that.
+function(a6_student_set name dir)
+  cmake_parse_arguments(ARG "STARTER" "FALLBACK" "" ${ARGN})
+  set(objects "")
+  foreach(file IN LISTS A6_TASK_FILES)
+    if(EXISTS "${dir}/${file}.cpp")
+      set(target a6_${name}_${file})
+      add_library(${target} OBJECT "${dir}/${file}.cpp")
+      target_link_libraries(${target} PUBLIC a6_api)
+      target_compile_options(${target} PRIVATE ${A6_WARNINGS})
+      if(ARG_STARTER)
+        target_compile_options(${target} PRIVATE -Wno-unused-parameter)
+      endif()
+      list(APPEND objects ${target})
+    elseif(ARG_FALLBACK)
+      list(APPEND objects a6_${ARG_FALLBACK}_${file})
+    else()
+      message(FATAL_ERROR "student set '${name}': ${dir}/${file}.cpp is missing")
+    endif()
+  endforeach()
+  set(A6_${name}_OBJECTS ${objects} PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,280 @@
+// The in-process implementation of StudentCode: builds the framework objects from plain data,
+// calls the student's functions, and turns what they produced back into plain data.
+#include <exception>
+#include <unordered_map>
+
+#include "a6/a6.h"
+#include "scenes/box2d_scenes.h"
+#include "student_code.h"
+
+namespace a6::harness {
+
+namespace {
+
+Vec2 toVec(const b2Vec2& v) { return Vec2(v.x, v.y); }
+b2Vec2 toB2(const Vec2& v) { return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y())); }
+
+// Spring pointers back to indices. A spring pointing outside the system gets index -1.
+std::vector<SpringData> springsAsData(const MassSpringSystem& system) {
+  std::unordered_map<const Particle*, int> index;
+  for (std::size_t k = 0; k < system.particles.size(); ++k) {
+    index[&system.particles[k]] = static_cast<int>(k);
+  }
+  auto find = [&](const Particle* p) {
+    const auto it = index.find(p);
+    return it == index.end() ? -1 : it->second;
+  };
+  std::vector<SpringData> out;
+  out.reserve(system.springs.size());
+  for (const Spring& s : system.springs) {
+    out.push_back({find(s.p1), find(s.p2), s.restLength, s.ks, s.kd, s.type});
+  }
+  return out;
+}
+
+JointInfo describe(const Box2DScene& scene, b2Joint* joint, float invDt) {
+  JointInfo info;
+  info.bodyA = scene.indexOf(joint->GetBodyA());
+  info.bodyB = scene.indexOf(joint->GetBodyB());
+  info.anchorA = toVec(joint->GetAnchorA());
+  info.anchorB = toVec(joint->GetAnchorB());
+  info.collideConnected = joint->GetCollideConnected();
+  info.reactionForce = toVec(joint->GetReactionForce(invDt));
+  switch (joint->GetType()) {
+    case e_revoluteJoint: {
+      auto* j = static_cast<b2RevoluteJoint*>(joint);
+      info.type = "revolute";
+      info.localAnchorA = toVec(j->GetLocalAnchorA());
+      info.localAnchorB = toVec(j->GetLocalAnchorB());
+      info.enableLimit = j->IsLimitEnabled();
+      info.lower = j->GetLowerLimit();
+      info.upper = j->GetUpperLimit();
+      info.enableMotor = j->IsMotorEnabled();
+      info.motorSpeed = j->GetMotorSpeed();
+      info.maxMotor = j->GetMaxMotorTorque();
+      break;
+    }
+    case e_prismaticJoint: {
+      auto* j = static_cast<b2PrismaticJoint*>(joint);
+      info.type = "prismatic";
+      info.localAnchorA = toVec(j->GetLocalAnchorA());
+      info.localAnchorB = toVec(j->GetLocalAnchorB());
+      info.localAxisA = toVec(j->GetLocalAxisA());
+      info.enableLimit = j->IsLimitEnabled();
+      info.lower = j->GetLowerLimit();
+      info.upper = j->GetUpperLimit();
+      info.enableMotor = j->IsMotorEnabled();
+      info.motorSpeed = j->GetMotorSpeed();
+      info.maxMotor = j->GetMaxMotorForce();
+      break;
+    }
+    case e_distanceJoint: {
+      auto* j = static_cast<b2DistanceJoint*>(joint);
+      info.type = "distance";
+      info.localAnchorA = toVec(j->GetLocalAnchorA());
+      info.localAnchorB = toVec(j->GetLocalAnchorB());
+      info.length = j->GetLength();
+      info.minLength = j->GetMinLength();
+      info.maxLength = j->GetMaxLength();
+      info.stiffness = j->GetStiffness();
+      info.damping = j->GetDamping();
+      break;
+    }
+    case e_wheelJoint: {
+      auto* j = static_cast<b2WheelJoint*>(joint);
+      info.type = "wheel";
+      info.localAnchorA = toVec(j->GetLocalAnchorA());
+      info.localAnchorB = toVec(j->GetLocalAnchorB());
+      info.localAxisA = toVec(j->GetLocalAxisA());
+      info.enableLimit = j->IsLimitEnabled();
+      info.lower = j->GetLowerLimit();
+      info.upper = j->GetUpperLimit();
+      info.enableMotor = j->IsMotorEnabled();
+      info.motorSpeed = j->GetMotorSpeed();
+      info.maxMotor = j->GetMaxMotorTorque();
+      info.stiffness = j->GetStiffness();
+      info.damping = j->GetDamping();
+      break;
+    }
+    case e_mouseJoint: {
+      auto* j = static_cast<b2MouseJoint*>(joint);
+      info.type = "mouse";
+      info.target = toVec(j->GetTarget());
+      info.maxForce = j->GetMaxForce();
+      info.stiffness = j->GetStiffness();
+      info.damping = j->GetDamping();
+      break;
+    }
+    default:
+      info.type = "other";
+  }
+  return info;
+}
+
+std::vector<JointInfo> describeAll(const Box2DScene& scene, float invDt) {
+  std::vector<JointInfo> out;
+  for (b2Joint* j = scene.world->GetJointList(); j != nullptr; j = j->GetNext()) {
+    out.push_back(describe(scene, j, invDt));
+  }
+  // Box2D lists the newest joint first; report them in creation order.
+  return {out.rbegin(), out.rend()};
+}
+
+// Runs `body` and turns any exception into the result's error.
+template <typename Result, typename Body>
+Result guarded(Body&& body) {
+  Result result;
+  try {
+    body(result);
+  } catch (const std::exception& e) {
+    result.error = std::string("exception: ") + e.what();
+  } catch (...) {
+    result.error = "exception of unknown type";
+  }
+  return result;
+}
+
+class InProcess final : public StudentCode {
+ public:
+  explicit InProcess(ForceModel reference) : reference_(std::move(reference)) {}
+
+  SpringForceResult springForce(const SpringForceRequest& request) override {
+    return guarded<SpringForceResult>([&](SpringForceResult& result) {
+      Particle p1 = request.p1, p2 = request.p2;
+      Spring s;
+      s.p1 = &p1;
+      s.p2 = &p2;
+      s.restLength = request.restLength;
+      s.ks = request.ks;
+      s.kd = request.kd;
+      result.force = s.computeForce();
+    });
+  }
+
+  ForcesResult forces(const ForcesRequest& request) override {
+    return guarded<ForcesResult>([&](ForcesResult& result) {
+      const Particle& p = request.particle;
+      const Environment& env = request.env;
+      result.gravity = gravityForce(p, env.gravity);
+      result.buoyancy = buoyancyForce(p, env.buoyancy, env.airTemperature);
+      result.drag = dragForce(p, env.drag);
+      result.repulsion = repulsionForce(request.contact, env.repulsion);
+      result.total = externalForce(p, env);
+    });
+  }
+
+  SimulateResult simulate(const SimulateRequest& request) override {
+    return guarded<SimulateResult>([&](SimulateResult& result) {
+      MassSpringSystem system;
+      system.env = request.env;
+      for (const Particle& p : request.particles) system.addParticle(p);
+      for (const SpringData& s : request.springs) {
+        system.addSpring(s.i, s.j, s.ks, s.kd, s.type, s.restLength);
+      }
+      if (request.referenceForces) system.setForceModel(reference_);
+      const int every = std::max(1, request.recordEvery);
+      for (int frame = 1; frame <= request.frames; ++frame) {
+        if (request.stepOnly) {
+          system.step(request.frameDt);
+        } else {
+          system.advance(request.frameDt, request.substeps);
+        }
+        if (frame % every == 0 || frame == request.frames) {
+          result.recordedFrames.push_back(frame);
+          result.states.emplace_back(system.particles.begin(), system.particles.end());
+        }
+      }
+    });
+  }
+
+  ClothResult buildCloth(const ClothSpec& spec) override {
+    return guarded<ClothResult>([&](ClothResult& result) {
+      MassSpringSystem system;
+      a6::buildCloth(system, spec);
+      result.particles.assign(system.particles.begin(), system.particles.end());
+      result.springs = springsAsData(system);
+    });
+  }
+
+  ParticlesResult emit(const EmitRequest& request) override {
+    return guarded<ParticlesResult>([&](ParticlesResult& result) {
+      Random rng(request.seed);
+      for (int k = 0; k < request.count; ++k) {
+        result.particles.push_back(emitParticle(request.spec, rng));
+      }
+    });
+  }
+
+  ParticlesResult runParticles(const ParticleRunRequest& request) override {
+    return guarded<ParticlesResult>([&](ParticlesResult& result) {
+      ParticleSystem system(request.seed);
+      system.emitter = request.emitter;
+      system.env = request.env;
+      system.coolingRate = request.coolingRate;
+      system.particles = request.initial;
+      if (request.referenceForces) system.setForceModel(reference_);
+      for (int k = 0; k < request.steps; ++k) {
+        system.update(request.dt);
+        result.counts.push_back(static_cast<int>(system.particles.size()));
+      }
+      result.particles = system.particles;
+    });
+  }
+
+  Box2DResult runBox2D(const Box2DRequest& request) override {
+    return guarded<Box2DResult>([&](Box2DResult& result) {
+      std::unique_ptr<Box2DScene> scene = makeBox2DScene(request.scene);
+      if (!scene) {
+        result.error = "unknown Box2D scene '" + request.scene + "'";
+        return;
+      }
+      const float invDt = 1.0f / scene->dt;
+      for (b2Body* body : scene->bodies) {
+        result.bodies.push_back({"", body->GetMass(), body->GetInertia() -
+                                     body->GetMass() * body->GetLocalCenter().LengthSquared(),
+                                 toVec(body->GetLocalCenter())});
+      }
+      for (std::size_t k = 0; k < scene->bodies.size(); ++k) {
+        result.bodies[k].name = scene->bodyNames[k];
+      }
+      result.builtJoints = describeAll(*scene, invDt);
+
+      b2MouseJoint* mouse = nullptr;
+      for (int step = 0; step < request.steps; ++step) {
+        // The drag script for this step.
+        for (const DragEvent& event : request.drag) {
+          if (event.step != step) continue;
+          if (event.kind == DragEvent::Kind::Begin && mouse == nullptr && scene->dragBody >= 0) {
+            mouse = beginDrag(*scene->world, scene->ground, scene->bodies[scene->dragBody],
+                              toB2(event.target));
+            if (mouse != nullptr) result.dragJoints.push_back(describe(*scene, mouse, invDt));
+          } else if (event.kind == DragEvent::Kind::Move && mouse != nullptr) {
+            moveDrag(mouse, toB2(event.target));
+          } else if (event.kind == DragEvent::Kind::End && mouse != nullptr) {
+            endDrag(*scene->world, mouse);
+            mouse = nullptr;  // whatever endDrag did, never touch that joint again
+          }
+        }
+        scene->step();
+        std::vector<BodyPose>& poses = result.poses.emplace_back();
+        for (b2Body* body : scene->bodies) {
+          poses.push_back({toVec(body->GetPosition()), body->GetAngle(),
+                           toVec(body->GetLinearVelocity()), body->GetAngularVelocity()});
+        }
+        result.jointCounts.push_back(scene->world->GetJointCount());
+      }
+      result.joints = describeAll(*scene, invDt);
+    });
+  }
+
+ private:
+  ForceModel reference_;
+};
+
+}  // namespace
+
+std::unique_ptr<StudentCode> makeInProcess(ForceModel reference) {
+  return std::make_unique<InProcess>(std::move(reference));
+}
+
+}  // namespace a6::harness

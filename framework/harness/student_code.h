@@ -1,0 +1,172 @@
+// "The student's code", as the test suite sees it: a few coarse requests in plain data.
+//
+// Design note: why an interface.
+// The physics suite is written once against this class. Students run it in-process (the
+// test binary links their six files: fast, and a debugger works). The grader runs the same
+// suite against a probe process that links the student's files and answers these requests
+// over a pipe, so student code never runs in the process that decides the grade. Hence every
+// request and result is plain data (no pointers, no callbacks): it must serialise.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "a6/cloth.h"
+#include "a6/forces.h"
+#include "a6/particle_system.h"
+
+namespace a6::harness {
+
+/// A spring as data: particle indices instead of pointers.
+struct SpringData {
+  int i = 0, j = 0;  ///< indices of p1 and p2
+  double restLength = 0, ks = 0, kd = 0;
+  SpringType type = SpringType::Other;
+};
+
+/// Every result carries an error: empty when the student code ran to the end, otherwise what
+/// went wrong (an exception's message, a crash or a timeout in the grader's probe).
+struct Outcome {
+  std::string error;
+  bool ok() const { return error.empty(); }
+};
+
+// Task 1 ---------------------------------------------------------------------------------------
+struct SpringForceRequest {
+  Particle p1, p2;
+  double restLength = 0, ks = 0, kd = 0;
+};
+struct SpringForceResult : Outcome {
+  Vec2 force = Vec2::Zero();  ///< on p2, N
+};
+
+// Task 2 ---------------------------------------------------------------------------------------
+struct ForcesRequest {
+  Particle particle;
+  Environment env;
+  Contact contact;  ///< the contact handed to repulsionForce on its own
+};
+struct ForcesResult : Outcome {
+  Vec2 gravity = Vec2::Zero(), buoyancy = Vec2::Zero(), drag = Vec2::Zero();
+  Vec2 repulsion = Vec2::Zero();  ///< repulsionForce(request.contact, env.repulsion)
+  Vec2 total = Vec2::Zero();      ///< externalForce(particle, env)
+};
+
+// Task 3 ---------------------------------------------------------------------------------------
+struct SimulateRequest {
+  std::vector<Particle> particles;
+  std::vector<SpringData> springs;
+  Environment env;
+  double frameDt = 1.0 / 60;  ///< s
+  int substeps = 1;           ///< advance(frameDt, substeps) per frame...
+  bool stepOnly = false;      ///< ...or, when true, step(frameDt) per frame
+  int frames = 1;
+  int recordEvery = 1;        ///< record the state after every k-th frame (and the last)
+  bool referenceForces = false;  ///< swap in the reference force models (force_model.h)
+};
+struct SimulateResult : Outcome {
+  std::vector<int> recordedFrames;                ///< frame numbers (1-based) recorded
+  std::vector<std::vector<Particle>> states;      ///< one particle list per recorded frame
+};
+
+// Task 4 ---------------------------------------------------------------------------------------
+struct ClothResult : Outcome {
+  std::vector<Particle> particles;
+  std::vector<SpringData> springs;
+};
+
+// Task 5 ---------------------------------------------------------------------------------------
+struct EmitRequest {
+  EmitterSpec spec;
+  std::uint64_t seed = 1;
+  int count = 1;
+};
+struct ParticlesResult : Outcome {
+  std::vector<Particle> particles;
+  std::vector<int> counts;  ///< number of live particles after every step (update runs only)
+};
+struct ParticleRunRequest {
+  EmitterSpec emitter;
+  Environment env;
+  double coolingRate = 1;
+  std::uint64_t seed = 1;
+  std::vector<Particle> initial;  ///< particles alive before the first step
+  double dt = 1.0 / 60;           ///< s
+  int steps = 1;
+  bool referenceForces = false;
+};
+
+// Task 6 ---------------------------------------------------------------------------------------
+/// A scripted mouse drag: at the start of step `step` (0-based), begin, move or end.
+struct DragEvent {
+  enum class Kind { Begin, Move, End } kind = Kind::Begin;
+  int step = 0;
+  Vec2 target = Vec2::Zero();  ///< m, world frame
+};
+struct Box2DRequest {
+  std::string scene;
+  int steps = 60;
+  std::vector<DragEvent> drag;
+};
+/// A body's state after a step: position of its origin (m), angle
+/// (rad), linear (m/s) and angular (rad/s) velocity.
+struct BodyPose {
+  Vec2 position = Vec2::Zero();
+  double angle = 0;
+  Vec2 velocity = Vec2::Zero();
+  double angularVelocity = 0;
+};
+struct BodyInfo {
+  std::string name;
+  double mass = 0;     ///< kg
+  double inertia = 0;  ///< about the centre of mass, kg·m²
+  Vec2 localCenter = Vec2::Zero();  ///< centre of mass in the body frame, m
+};
+/// Everything a test may ask of a joint (fields that do not apply stay zero / false).
+struct JointInfo {
+  std::string type;      ///< revolute, prismatic, distance, wheel, mouse, other
+  int bodyA = -2, bodyB = -2;  ///< index into bodies; -1 the ground; -2 unknown
+  Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();            ///< world, m
+  Vec2 localAnchorA = Vec2::Zero(), localAnchorB = Vec2::Zero();  ///< body frames, m
+  Vec2 localAxisA = Vec2::Zero();  ///< prismatic and wheel axis in bodyA's frame
+  bool collideConnected = false;
+  bool enableLimit = false;
+  double lower = 0, upper = 0;     ///< limits: m (prismatic) or rad (revolute)
+  bool enableMotor = false;
+  double motorSpeed = 0;           ///< m/s or rad/s
+  double maxMotor = 0;             ///< max motor force (N) or torque (N·m)
+  double length = 0, minLength = 0, maxLength = 0;  ///< distance joint, m
+  double stiffness = 0, damping = 0;  ///< distance, wheel, mouse
+  double maxForce = 0;             ///< mouse, N
+  Vec2 target = Vec2::Zero();      ///< mouse, m
+  Vec2 reactionForce = Vec2::Zero();  ///< on bodyB at the last step, N
+};
+struct Box2DResult : Outcome {
+  std::vector<BodyInfo> bodies;
+  std::vector<std::vector<BodyPose>> poses;  ///< poses[step][body], after each step
+  std::vector<JointInfo> joints;             ///< the world's joints after the last step
+  std::vector<JointInfo> builtJoints;        ///< the world's joints right after building
+  std::vector<int> jointCounts;              ///< the world's joint count after each step
+  std::vector<JointInfo> dragJoints;         ///< each mouse joint, as beginDrag returned it
+};
+
+/// The student's code. Every call catches what it can and reports it in `error`.
+class StudentCode {
+ public:
+  virtual ~StudentCode() = default;
+  virtual SpringForceResult springForce(const SpringForceRequest& request) = 0;
+  virtual ForcesResult forces(const ForcesRequest& request) = 0;
+  virtual SimulateResult simulate(const SimulateRequest& request) = 0;
+  virtual ClothResult buildCloth(const ClothSpec& spec) = 0;
+  virtual ParticlesResult emit(const EmitRequest& request) = 0;
+  virtual ParticlesResult runParticles(const ParticleRunRequest& request) = 0;
+  virtual Box2DResult runBox2D(const Box2DRequest& request) = 0;
+};
+
+/// The in-process implementation: calls the six files linked into this binary. `reference`
+/// is the force model used for requests that ask for referenceForces (empty: the student's).
+std::unique_ptr<StudentCode> makeInProcess(ForceModel reference = {});
+
+}  // namespace a6::harness

@@ -1,0 +1,58 @@
+// Task 3: the mass-spring system and its time stepping (slides "Time stepping", "Instability").
+#pragma once
+
+#include <deque>
+#include <vector>
+
+#include "a6/force_model.h"
+#include "a6/forces.h"
+#include "a6/spring.h"
+
+namespace a6 {
+
+/// Particles, the springs between them, and their environment.
+///
+/// Plain, public data in the spirit of the slides. `particles` is a std::deque so that a
+/// Particle* (held by springs) stays valid while particles are added at the back; never erase
+/// particles from a mass-spring system.
+class MassSpringSystem {
+ public:
+  std::deque<Particle> particles;
+  std::vector<Spring> springs;
+  Environment env;
+
+  /// Appends a particle; returns its index.
+  int addParticle(const Particle& p);
+  /// Appends a spring between particles i and j (indices into `particles`). A negative
+  /// restLength means "the current distance between the two particles".
+  Spring& addSpring(int i, int j, double ks, double kd, SpringType type = SpringType::Other,
+                    double restLength = -1);
+
+  /// TASK 3 (time_stepping.cpp). One symplectic Euler step of dt seconds:
+  ///   1. initialise each particle's force f with its external force,
+  ///   2. add every spring's force to both of its particles (p2 gets +f, p1 gets -f),
+  ///   3. for every particle that is not pinned: v += f/m dt, then x += v dt.
+  void step(double dt);
+  /// TASK 3 (time_stepping.cpp). Advances by frameDt seconds in exactly `substeps` calls of
+  /// step(frameDt / substeps). substeps >= 1.
+  void advance(double frameDt, int substeps);
+
+  /// The external force on p (gravity, buoyancy, drag, collisions): your externalForce(p, env)
+  /// unless a test has swapped in a reference model (see force_model.h). N, world frame.
+  Vec2 externalForce(const Particle& p) const;
+  /// The force of spring s on its p2: your s.computeForce() unless swapped. N, world frame.
+  Vec2 springForce(const Spring& s) const;
+  void setForceModel(ForceModel model) { forceModel_ = std::move(model); }
+
+  /// Energies for plots and tests, J. Potential energy of gravity is measured from y = 0.
+  double kineticEnergy() const;
+  double springEnergy() const;
+  double gravityEnergy() const;
+  /// The index of a particle of this system, or -1.
+  int indexOf(const Particle* p) const;
+
+ private:
+  ForceModel forceModel_;
+};
+
+}  // namespace a6
