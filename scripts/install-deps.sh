@@ -12,6 +12,13 @@ packages=(
   libbox2d-dev       # Box2D 2.4.1
   libgtest-dev       # GoogleTest 1.12
   libbenchmark-dev   # Google Benchmark
+  nlohmann-json3-dev # JSON (manifests, reports)
+  libstb-dev         # stb_image_write / stb_image (PNG)
+  libosmesa6-dev     # OSMesa: headless OpenGL (Mesa 22.3, llvmpipe)
+  libegl-dev         # EGL (surfaceless headless backend)
+  libglfw3-dev       # GLFW 3.3: the viewer's window
+  libimgui-dev       # Dear ImGui: the viewer's widgets
+  xvfb xauth         # a virtual X server for the viewer's smoke test
 )
 
 missing=()

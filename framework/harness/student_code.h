@@ -16,15 +16,11 @@
 #include "a6/cloth.h"
 #include "a6/forces.h"
 #include "a6/particle_system.h"
+#include "scenes/snapshot.h"
 
 namespace a6::harness {
 
-/// A spring as data: particle indices instead of pointers.
-struct SpringData {
-  int i = 0, j = 0;  ///< indices of p1 and p2
-  double restLength = 0, ks = 0, kd = 0;
-  SpringType type = SpringType::Other;
-};
+using a6::SpringData;  // particle indices instead of pointers (scenes/snapshot.h)
 
 /// Every result carries an error: empty when the student code ran to the end, otherwise what
 /// went wrong (an exception's message, a crash or a timeout in the grader's probe).
