@@ -1,3 +1,4 @@
+cmake_minimum_required(VERSION 3.25)
 # Runs a physics-suite binary and checks its per-task summary (the A6-SUMMARY line):
 #   cmake -DBINARY=<path> -DFAIL=<tasks, comma-separated> -DPASS=<tasks> -P check_run.cmake
 # Every FAIL task must have at least one failed test, every PASS task none, and the binary must

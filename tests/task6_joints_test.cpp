@@ -1,51 +1,563 @@
+// Task 6 — Box2D 2.4 joints. Oracles: what each scene asks of its joints (type, bodies, world
+// anchors, limits, motor, the stiffness b2LinearStiffness gives), and closed-form physics: the
+// physical pendulum's period, the reaction force m g of a hanging bob, free fall while a rope is
+// slack, a piston held at its limits, a car that drives forward, a mouse joint that pulls its
+// body to the target and disappears when the drag ends.
+//
+// Box2D solves joints iteratively in single precision, so the dynamic checks compare with
+// tolerances of a few percent or a few Box2D slops (b2_linearSlop = 0.005 m), never exactly.
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "scenes/box2d_scenes.h"
 #include "suite.h"
+
 namespace a6::test {
 namespace {
-TEST(Task6Joints, Explore2) {
-  {
-    harness::Box2DRequest r; r.scene = "bridge"; r.steps = 240;
-    auto res = student().runBox2D(r);
-    double minY = 9, minLoad = 9, maxGap = 0;
-    for (auto& ps : res.poses) { for (int k = 0; k < 10; ++k) minY = std::min(minY, ps[k].position.y()); minLoad = std::min(minLoad, ps[10].position.y()); }
-    for (auto& j : res.joints) maxGap = std::max(maxGap, (j.anchorA - j.anchorB).norm());
-    std::printf("bridge minPlankY=%g minLoadY=%g end load=%s mid=%s gap=%g\n", minY, minLoad, str(res.poses.back()[10].position).c_str(), str(res.poses.back()[5].position).c_str(), maxGap);
-    for (int s : {0, 30, 60, 120, 239}) std::printf("  load %d %s plank4 %s plank5 %s\n", s, str(res.poses[s][10].position).c_str(), str(res.poses[s][4].position).c_str(), str(res.poses[s][5].position).c_str());
+
+using harness::Box2DRequest;
+using harness::Box2DResult;
+using harness::DragEvent;
+using harness::JointInfo;
+namespace p = box2d_params;
+
+constexpr double kDt = 1.0 / 60;  // s, the time step of every scene
+const Vec2 kGravity(0, p::kGravity);
+const Vec2 kPivot(p::kPivot.x, p::kPivot.y);
+constexpr double kSlop = 0.02;  // m: a few b2_linearSlop, what Box2D lets a joint drift
+
+Box2DResult runScene(const std::string& scene, int steps, std::vector<DragEvent> drag = {}) {
+  Box2DRequest request;
+  request.scene = scene;
+  request.steps = steps;
+  request.drag = std::move(drag);
+  return student().runBox2D(request);
+}
+
+std::string bodyName(const Box2DResult& r, int index) {
+  if (index == -1) return "ground";
+  if (index >= 0 && index < static_cast<int>(r.bodies.size())) {
+    return r.bodies[index].name + " (" + std::to_string(index) + ")";
   }
-  {
-    harness::Box2DRequest r; r.scene = "rope"; r.steps = 300;
-    auto res = student().runBox2D(r);
-    double maxD = 0; int first = -1;
-    for (size_t s = 0; s < res.poses.size(); ++s) { double d = (res.poses[s][0].position - Vec2(0, 2)).norm(); if (d > 1.49 && first < 0) first = s; maxD = std::max(maxD, d); }
-    std::printf("rope maxD=%.6f first>1.49 at %d\n", maxD, first);
+  return "unknown body";
+}
+
+std::string describe(const Box2DResult& r, const JointInfo& j) {
+  std::ostringstream out;
+  out << j.type << " " << bodyName(r, j.bodyA) << " - " << bodyName(r, j.bodyB) << ", anchors "
+      << str(j.anchorA) << " / " << str(j.anchorB);
+  if (j.type == "prismatic" || j.type == "wheel") out << ", local axis " << str(j.localAxisA);
+  if (j.type == "prismatic" || j.type == "revolute" || j.type == "wheel") {
+    out << ", limit " << (j.enableLimit ? "on" : "off") << " [" << j.lower << ", " << j.upper
+        << "], motor " << (j.enableMotor ? "on" : "off") << " speed " << j.motorSpeed << " max "
+        << j.maxMotor;
   }
-  {
-    harness::Box2DRequest r; r.scene = "pendulum"; r.steps = 400;
-    auto res = student().runBox2D(r);
-    std::vector<double> cr;
-    double prev = 0.1 * 1; // x at t=0 approx
-    prev = std::sin(0.1);
-    for (size_t s = 0; s < res.poses.size(); ++s) { double x = res.poses[s][0].position.x(); if ((prev > 0) != (x > 0)) { double t0 = s / 60.0, t1 = (s + 1) / 60.0; cr.push_back(t0 + (t1 - t0) * prev / (prev - x)); } prev = x; }
-    for (double c : cr) std::printf(" %g", c);
-    double T = 2 * (cr.back() - cr.front()) / (cr.size() - 1);
-    double m = res.bodies[0].mass, I = res.bodies[0].inertia + m;
-    double T0 = 2 * M_PI * std::sqrt(I / (m * 9.81));
-    std::printf("\npendulum T=%.6f T0=%.6f rel=%g\n", T, T0, T / T0 - 1);
+  if (j.type == "distance") {
+    out << ", length " << j.length << " min " << j.minLength << " max " << j.maxLength;
   }
-  {
-    harness::Box2DRequest r; r.scene = "car"; r.steps = 240;
-    auto res = student().runBox2D(r);
-    double maxA = 0, lat = 0, ymin = 9, ymax = -9;
-    for (auto& ps : res.poses) {
-      maxA = std::max(maxA, std::abs(ps[0].angle));
-      double c = std::cos(ps[0].angle), s = std::sin(ps[0].angle);
-      for (int w = 1; w <= 2; ++w) { Vec2 d = ps[w].position - ps[0].position; Vec2 l(c * d.x() + s * d.y(), -s * d.x() + c * d.y()); double x0 = w == 1 ? -1 : 1; double y0 = w == 1 ? -0.65 : -0.6; lat = std::max(lat, std::abs(l.x() - x0)); ymin = std::min(ymin, l.y() - y0); ymax = std::max(ymax, l.y() - y0); }
+  if (j.type == "distance" || j.type == "wheel" || j.type == "mouse") {
+    out << ", stiffness " << j.stiffness << " damping " << j.damping;
+  }
+  if (j.type == "mouse") out << ", target " << str(j.target) << ", maxForce " << j.maxForce;
+  return out.str();
+}
+
+std::string describeAll(const Box2DResult& r, const std::vector<JointInfo>& joints) {
+  if (joints.empty()) return "(no joints)";
+  std::ostringstream out;
+  for (const JointInfo& j : joints) out << "\n    " << describe(r, j);
+  return out.str();
+}
+
+// "scene 'name': the joints it built ...", the input part of every message.
+std::string built(const std::string& scene, const Box2DResult& r) {
+  return "scene '" + scene + "', joints after building:" + describeAll(r, r.builtJoints);
+}
+
+// Checks a joint's type and bodies; the message names the joint and what the scene expected.
+::testing::AssertionResult isJoint(const Box2DResult& r, const JointInfo& j, const char* type,
+                                   int bodyA, int bodyB) {
+  if (j.type == type && j.bodyA == bodyA && j.bodyB == bodyB) {
+    return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure()
+         << currentTask() << ": expected a " << type << " joint " << bodyName(r, bodyA) << " - "
+         << bodyName(r, bodyB) << "\n  actual:   " << describe(r, j) << "\n  ";
+}
+
+double relTol(double expected, double rel) { return std::abs(expected) * rel; }
+
+// b2LinearStiffness (Box2D 2.4.1, b2_joint.cpp): m = mA mB / (mA + mB), or the one non-zero
+// mass when a body is static; ω = 2π f; stiffness = m ω², damping = 2 m ζ ω.
+struct StiffnessDamping {
+  double stiffness, damping;
+};
+StiffnessDamping linearStiffness(double hertz, double ratio, double massA, double massB) {
+  const double m =
+      massA > 0 && massB > 0 ? massA * massB / (massA + massB) : (massA > 0 ? massA : massB);
+  const double omega = 2 * M_PI * hertz;
+  return {m * omega * omega, 2 * m * ratio * omega};
+}
+
+// Pendulum ------------------------------------------------------------------------------------
+
+TEST(Task6Joints, PendulumIsAHingeAtThePivot) {
+  const Box2DResult r = runScene("pendulum", 1);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.builtJoints.size(), 1u)
+      << currentTask() << ": " << built("pendulum", r)
+      << hint(
+             "createHinge must create one b2RevoluteJoint with world.CreateJoint(&def) and "
+             "return it");
+  const JointInfo& j = r.builtJoints[0];
+  EXPECT_TRUE(isJoint(r, j, "revolute", -1, 0))
+      << hint("b2RevoluteJointDef::Initialize(a, b, worldAnchor): a becomes bodyA, b bodyB");
+  EXPECT_VEC_NEAR(j.anchorA, kPivot, 1e-5)
+      << built("pendulum", r)
+      << hint(
+             "Initialize takes the anchor in WORLD coordinates: pass worldAnchor (the pivot), "
+             "not a body's position");
+  EXPECT_VEC_NEAR(j.anchorB, kPivot, 1e-5)
+      << built("pendulum", r) << hint("both bodies must meet at the pivot when the joint is made");
+  EXPECT_FALSE(j.enableLimit || j.enableMotor)
+      << currentTask() << ": " << built("pendulum", r)
+      << hint("the hinge of a pendulum has no limit and no motor");
+}
+
+TEST(Task6Joints, PendulumPeriodMatchesThePhysicalPendulum) {
+  // Released from rest at θ0 = 0.1 rad: T = 2π sqrt(I_pivot / (m g L)) (1 + θ0²/16), with
+  // I_pivot = I_cm + m L² (parallel axes). The bob's x - x_pivot changes sign every half period;
+  // the period is twice the mean spacing of its (interpolated) zero crossings.
+  const int steps = 420;  // 7 s, three and a half periods
+  const Box2DResult r = runScene("pendulum", steps);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.bodies.size(), 1u);
+  ASSERT_EQ(r.poses.size(), static_cast<std::size_t>(steps));
+  const double m = r.bodies[0].mass, L = p::kPendulumLength, theta0 = p::kPendulumAngle;
+  const double iPivot = r.bodies[0].inertia + m * L * L;
+  const double expected =
+      2 * M_PI * std::sqrt(iPivot / (m * -p::kGravity * L)) * (1 + theta0 * theta0 / 16);
+
+  std::vector<double> crossings;  // s
+  double previous = L * std::sin(theta0), tPrevious = 0;
+  for (int s = 0; s < steps; ++s) {
+    const double x = r.poses[s][0].position.x() - kPivot.x(), t = (s + 1) * kDt;
+    if ((previous > 0) != (x > 0)) {
+      crossings.push_back(tPrevious + (t - tPrevious) * previous / (previous - x));
     }
-    std::printf("car x end %g maxAngle %g lat %g susp [%g, %g]\n", res.poses.back()[0].position.x(), maxA, lat, ymin, ymax);
-    for (int s : {59, 119, 179, 239}) std::printf("  x(%d)=%g", s, res.poses[s][0].position.x());
-    std::printf("\n");
+    previous = x;
+    tPrevious = t;
+  }
+  ASSERT_GE(crossings.size(), 5u)
+      << currentTask() << ": the bob crossed below the pivot " << crossings.size() << " times in "
+      << steps * kDt << " s; a pendulum of period " << expected << " s crosses 7 times. "
+      << built("pendulum", r) << "\n  bob at the end: " << str(r.poses.back()[0].position)
+      << hint("the bob must swing about the pivot: createHinge(world, ground, bob, pivot)");
+  const double period = 2 * (crossings.back() - crossings.front()) / (crossings.size() - 1);
+  EXPECT_CLOSE(period, expected, relTol(expected, 0.01))
+      << "input: pendulum, m=" << m << " kg, I_cm=" << r.bodies[0].inertia << " kg m², L=" << L
+      << " m, θ0=" << theta0 << " rad"
+      << hint(
+             "the period of a hinged bob is fixed by the pivot: check the hinge's anchor is the "
+             "pivot (world point), not the bob's centre");
+}
+
+TEST(Task6Joints, HangingBobFeelsMinusMTimesGravityAndStaysAtRest) {
+  // A bob hanging straight down is in equilibrium: the hinge pulls it up with -m g.
+  const int steps = 120;
+  const Box2DResult r = runScene("hanging", steps);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.bodies.size(), 1u);
+  ASSERT_EQ(r.joints.size(), 1u) << currentTask() << ": scene 'hanging', joints after " << steps
+                                 << " steps:" << describeAll(r, r.joints)
+                                 << hint("createHinge must create and return a revolute joint");
+  ASSERT_TRUE(isJoint(r, r.joints[0], "revolute", -1, 0))
+      << hint("Initialize(ground, bob, pivot): the bob is bodyB, whose reaction force we read");
+  const double m = r.bodies[0].mass;
+  const Vec2 expected = -m * kGravity;
+  EXPECT_VEC_NEAR(r.joints[0].reactionForce, expected, 0.01 * expected.norm())
+      << "input: hanging bob, m=" << m << " kg, gravity " << str(kGravity)
+      << ", reaction force on the bob (GetReactionForce) after " << steps << " steps"
+      << hint("at rest the hinge carries the bob's whole weight: check the anchor is the pivot");
+  const Vec2 start = kPivot - Vec2(0, p::kPendulumLength);
+  for (int s = 0; s < steps; ++s) {
+    ASSERT_VEC_NEAR(r.poses[s][0].position, start, 1e-3)
+        << "step " << s + 1 << " of the hanging bob, which starts at rest right below the pivot"
+        << hint("a bob hanging straight below its hinge must not move");
   }
 }
+
+// Rope ----------------------------------------------------------------------------------------
+
+TEST(Task6Joints, RopeIsADistanceJointThatCanGoSlack) {
+  const Box2DResult r = runScene("rope", 1);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.builtJoints.size(), 1u)
+      << currentTask() << ": " << built("rope", r)
+      << hint("createRope must create one b2DistanceJoint and return it");
+  const JointInfo& j = r.builtJoints[0];
+  EXPECT_TRUE(isJoint(r, j, "distance", -1, 0)) << hint(
+      "Box2D 2.4 has no rope joint: use b2DistanceJointDef::Initialize(a, b, anchorA, "
+      "anchorB)");
+  EXPECT_VEC_NEAR(j.anchorA, kPivot, 1e-5) << built("rope", r) << hint("anchorA is the pivot");
+  EXPECT_VEC_NEAR(j.anchorB, kPivot + Vec2(0.5, 0), 1e-5)
+      << built("rope", r) << hint("anchorB is the bob's centre, 0.5 m right of the pivot");
+  // Box2D stores max(minLength, b2_linearSlop): a minLength of 0 reads back as 0.005 m.
+  const double shortest = b2_linearSlop;
+  EXPECT_LE(j.minLength, shortest + 1e-6)
+      << currentTask() << ": " << built("rope", r)
+      << hint(
+             "a rope may get shorter: set def.minLength = 0 after Initialize (which sets "
+             "minLength = maxLength = the current distance)");
+  EXPECT_CLOSE(j.maxLength, p::kRopeMaxLength, 1e-6)
+      << built("rope", r) << hint("def.maxLength = maxLength: the rope's full length");
+  EXPECT_TRUE(j.stiffness == 0 && j.damping == 0)
+      << currentTask() << ": " << built("rope", r)
+      << hint("a rope is no spring: stiffness = damping = 0");
 }
+
+TEST(Task6Joints, RopeBobFallsFreelyWhileTheRopeIsSlack) {
+  // The bob starts 0.5 m from the pivot on a 1.5 m rope: for its first 25 steps (about 1 m of
+  // fall) the rope is slack, and Box2D's symplectic Euler gives exactly
+  // y_n = y0 + g t_n (t_n + h) / 2, with x unchanged.
+  const Box2DResult r = runScene("rope", 25);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.builtJoints.size(), 1u)
+      << currentTask() << ": " << built("rope", r) << hint("createRope must create the joint");
+  const Vec2 start = kPivot + Vec2(0.5, 0);
+  for (int s = 0; s < 25; ++s) {
+    const double t = (s + 1) * kDt;
+    const Vec2 expected = start + kGravity * t * (t + kDt) / 2;
+    ASSERT_VEC_NEAR(r.poses[s][0].position, expected, 1e-3)
+        << "bob after step " << s + 1 << " (t=" << t << " s), distance to the pivot "
+        << (r.poses[s][0].position - kPivot).norm() << " m, rope of max length "
+        << p::kRopeMaxLength << " m. " << built("rope", r)
+        << hint(
+               "a slack rope pulls nothing: minLength = 0, maxLength = the rope's length (a "
+               "distance joint with min = max is a rigid rod)");
+  }
 }
+
+TEST(Task6Joints, RopeGoesTautButNeverStretches) {
+  const int steps = 300;
+  const Box2DResult r = runScene("rope", steps);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.builtJoints.size(), 1u)
+      << currentTask() << ": " << built("rope", r) << hint("createRope must create the joint");
+  double longest = 0;
+  int at = 0;
+  for (int s = 0; s < steps; ++s) {
+    const double d = (r.poses[s][0].position - kPivot).norm();
+    if (d > longest) {
+      longest = d;
+      at = s + 1;
+    }
+  }
+  EXPECT_LE(longest, p::kRopeMaxLength + kSlop)
+      << currentTask() << ": longest pivot-bob distance " << longest << " m at step " << at
+      << ", rope max length " << p::kRopeMaxLength << " m. " << built("rope", r)
+      << hint("maxLength is the rope's length: the bob must never get farther than that");
+  EXPECT_GE(longest, p::kRopeMaxLength - kSlop)
+      << currentTask() << ": longest pivot-bob distance " << longest << " m in " << steps
+      << " steps, rope max length " << p::kRopeMaxLength << " m. " << built("rope", r)
+      << hint(
+             "the falling bob must pull the rope taut: maxLength = the rope's length, not "
+             "the initial distance");
+}
+
+// Bridge --------------------------------------------------------------------------------------
+
+TEST(Task6Joints, BridgeChainsThePlanksWithHingesAtTheirEnds) {
+  // Planks 0.5 m long from x = -N/4 to N/4 at y = 1: hinge k joins plank k-1 (the ground for
+  // k = 0) to plank k at the left end of plank k; the last one joins plank N-1 to the ground.
+  const int n = p::kBridgePlanks;
+  const Box2DResult r = runScene("bridge", 1);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.builtJoints.size(), static_cast<std::size_t>(n + 1))
+      << currentTask() << ": " << built("bridge", r)
+      << hint("createHinge must create and return a revolute joint for every call");
+  for (int k = 0; k <= n; ++k) {
+    const JointInfo& j = r.builtJoints[k];
+    const Vec2 end(-0.25 * n + 0.5 * k, 1.0);
+    EXPECT_TRUE(isJoint(r, j, "revolute", k == 0 ? -1 : k - 1, k == n ? -1 : k))
+        << "hinge " << k << hint("Initialize(a, b, worldAnchor): a becomes bodyA, b bodyB");
+    EXPECT_VEC_NEAR(j.anchorA, end, 1e-5)
+        << "hinge " << k << ": " << describe(r, j)
+        << hint("the hinge is at the planks' shared end, the world point passed as worldAnchor");
+    EXPECT_VEC_NEAR(j.anchorB, end, 1e-5) << "hinge " << k << ": " << describe(r, j);
+    if (HasFailure()) break;  // one wrong hinge says it all
+  }
+}
+
+TEST(Task6Joints, BridgeHoldsTheLoad) {
+  // A box dropped on the middle: the hinges stay joined, the bridge sags a little and carries
+  // the box, nothing falls through.
+  const int n = p::kBridgePlanks, steps = 240;
+  const Box2DResult r = runScene("bridge", steps);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.bodies.size(), static_cast<std::size_t>(n + 1));
+  ASSERT_EQ(r.joints.size(), static_cast<std::size_t>(n + 1))
+      << currentTask() << ": " << built("bridge", r) << hint("createHinge must create the joints");
+  for (int k = 0; k <= n; ++k) {
+    const JointInfo& j = r.joints[k];
+    EXPECT_LE((j.anchorA - j.anchorB).norm(), 0.05)
+        << currentTask() << ": hinge " << k << " after " << steps
+        << " steps came apart: " << describe(r, j)
+        << hint("both bodies' anchors must be the same world point at build");
+  }
+  double lowest = 1e9, lowestLoad = 1e9;
+  for (int s = 0; s < steps; ++s) {
+    for (int k = 0; k < n; ++k) lowest = std::min(lowest, r.poses[s][k].position.y());
+    lowestLoad = std::min(lowestLoad, r.poses[s][n].position.y());
+  }
+  EXPECT_GE(lowest, 0.0)
+      << currentTask() << ": lowest plank centre y=" << lowest << " m (the bridge hangs at y=1)"
+      << hint("a hinged bridge sags, it does not collapse: check every hinge's anchor");
+  EXPECT_GE(lowestLoad, 0.3)
+      << currentTask() << ": lowest load y=" << lowestLoad << " m, dropped from y=2"
+      << hint("the load must land on the bridge: check the planks are hinged to each other");
+  const std::vector<harness::BodyPose>& last = r.poses.back();
+  const double middle = std::max(last[n / 2 - 1].position.y(), last[n / 2].position.y());
+  EXPECT_LT(middle, 0.99) << currentTask() << ": middle planks at y=" << middle << " m after "
+                          << steps << " steps, the bridge was built at y=1"
+                          << hint("the loaded bridge must sag");
+  EXPECT_GT(last[n].position.y(), middle)
+      << currentTask() << ": load at " << str(last[n].position) << ", middle planks at y=" << middle
+      << hint("the load must rest on top of the bridge");
+}
+
+// Piston --------------------------------------------------------------------------------------
+
+TEST(Task6Joints, PistonsArePrismaticWithLimitsAndMotor) {
+  const Box2DResult r = runScene("piston", 1);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.builtJoints.size(), 2u)
+      << currentTask() << ": " << built("piston", r)
+      << hint("createPiston must create one b2PrismaticJoint per call and return it");
+  const double lower[2] = {p::kPistonLower, -p::kPistonUpper};
+  const double upper[2] = {p::kPistonUpper, p::kPistonLower};
+  const double speed[2] = {p::kPistonSpeed, -p::kPistonSpeed};
+  for (int k = 0; k < 2; ++k) {
+    const JointInfo& j = r.builtJoints[k];
+    const std::string which = "piston " + std::to_string(k) + ": " + describe(r, j);
+    EXPECT_TRUE(isJoint(r, j, "prismatic", -1, k))
+        << hint("b2PrismaticJointDef::Initialize(ground, piston, worldAnchor, axis)");
+    EXPECT_VEC_NEAR(j.anchorB, j.anchorA, 1e-5)
+        << which << hint("pass the world anchor to Initialize; it computes both local anchors");
+    EXPECT_VEC_NEAR(j.localAxisA, Vec2(0, 1), 1e-6)
+        << which << hint("the pistons slide along the axis passed in, (0, 1)");
+    EXPECT_TRUE(j.enableLimit) << currentTask() << ": " << which << hint("def.enableLimit = true");
+    EXPECT_CLOSE(j.lower, lower[k], 1e-6) << which << hint("def.lowerTranslation = lower");
+    EXPECT_CLOSE(j.upper, upper[k], 1e-6) << which << hint("def.upperTranslation = upper");
+    EXPECT_TRUE(j.enableMotor) << currentTask() << ": " << which << hint("def.enableMotor = true");
+    EXPECT_CLOSE(j.motorSpeed, speed[k], 1e-6) << which << hint("def.motorSpeed = motorSpeed");
+    EXPECT_CLOSE(j.maxMotor, p::kPistonMaxForce, 1e-3)
+        << which << hint("def.maxMotorForce = maxMotorForce");
+  }
+}
+
+TEST(Task6Joints, PistonsStopAtTheirLimits) {
+  // Piston 0 is driven up into its upper limit, piston 1 down into its lower one (at 1 m/s,
+  // 0.5 m away: both arrive after 0.5 s). Translation = (anchorB - anchorA)·axis, with anchorA
+  // fixed on the ground.
+  const int steps = 90;
+  const Box2DResult r = runScene("piston", steps);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.bodies.size(), 2u);
+  ASSERT_EQ(r.joints.size(), 2u) << currentTask() << ": " << built("piston", r)
+                                 << hint("createPiston must create the joints");
+  const double limit[2] = {p::kPistonUpper, -p::kPistonUpper};
+  for (int k = 0; k < 2; ++k) {
+    const JointInfo& j = r.joints[k];
+    ASSERT_TRUE(isJoint(r, j, "prismatic", -1, k));
+    const double sign = limit[k] > 0 ? 1 : -1;  // +1: upper limit, -1: lower limit
+    double farthest = 0;
+    int at = 0;
+    for (int s = 0; s < steps; ++s) {
+      const double translation = r.poses[s][k].position.y() + j.localAnchorB.y() - j.anchorA.y();
+      if (sign * translation > sign * farthest) {
+        farthest = translation;
+        at = s + 1;
+      }
+    }
+    EXPECT_LE(sign * farthest, sign * limit[k] + kSlop)
+        << currentTask() << ": piston " << k << " reached translation " << farthest << " m at step "
+        << at << ", its limit is " << limit[k] << " m. " << built("piston", r)
+        << hint("enableLimit = true with lowerTranslation and upperTranslation stops the piston");
+    const double reached = (j.anchorB - j.anchorA).y();
+    EXPECT_CLOSE(reached, limit[k], kSlop)
+        << "piston " << k << " translation after " << steps << " steps (" << steps * kDt
+        << " s), driven at " << sign * p::kPistonSpeed << " m/s. " << built("piston", r)
+        << hint("the motor (enableMotor, motorSpeed, maxMotorForce) drives it to the limit");
+  }
+}
+
+// Car -----------------------------------------------------------------------------------------
+
+TEST(Task6Joints, CarWheelsAreSprungMotorisedWheelJoints) {
+  const Box2DResult r = runScene("car", 1);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.bodies.size(), 3u);
+  ASSERT_EQ(r.builtJoints.size(), 2u)
+      << currentTask() << ": " << built("car", r)
+      << hint("createWheel must create one b2WheelJoint per call and return it");
+  const StiffnessDamping expected =
+      linearStiffness(p::kWheelHertz, p::kWheelDampingRatio, r.bodies[0].mass, r.bodies[1].mass);
+  for (int k = 0; k < 2; ++k) {
+    const JointInfo& j = r.builtJoints[k];
+    const std::string which = "wheel joint " + std::to_string(k) + ": " + describe(r, j);
+    EXPECT_TRUE(isJoint(r, j, "wheel", 0, k + 1))
+        << hint("b2WheelJointDef::Initialize(chassis, wheel, wheel->GetPosition(), axis)");
+    EXPECT_VEC_NEAR(j.anchorA, j.anchorB, 1e-5)
+        << which << hint("anchor the wheel joint at the wheel's centre, wheel->GetPosition()");
+    EXPECT_VEC_NEAR(j.localAnchorB, Vec2(0, 0), 1e-5)
+        << which << hint("the anchor is the wheel's centre, so it is (0, 0) in the wheel's frame");
+    EXPECT_VEC_NEAR(j.localAxisA, Vec2(0, 1), 1e-6)
+        << which << hint("the suspension slides along the axis passed in, (0, 1)");
+    EXPECT_CLOSE(j.stiffness, expected.stiffness, relTol(expected.stiffness, 1e-4))
+        << which << ", masses chassis " << r.bodies[0].mass << " kg, wheel " << r.bodies[k + 1].mass
+        << " kg, " << p::kWheelHertz << " Hz"
+        << hint(
+               "b2LinearStiffness(def.stiffness, def.damping, hertz, dampingRatio, chassis, "
+               "wheel): stiffness = m ω², m = mA mB / (mA + mB), ω = 2π f");
+    EXPECT_CLOSE(j.damping, expected.damping, relTol(expected.damping, 1e-4))
+        << which << ", damping ratio " << p::kWheelDampingRatio
+        << hint("b2LinearStiffness gives the damping too: 2 m ζ ω");
+    EXPECT_TRUE(j.enableMotor) << currentTask() << ": " << which << hint("def.enableMotor = true");
+    EXPECT_CLOSE(j.motorSpeed, p::kCarMotorSpeed, 1e-5)
+        << which << hint("def.motorSpeed = motorSpeed, unchanged (negative turns clockwise)");
+    EXPECT_CLOSE(j.maxMotor, p::kCarMaxTorque, 1e-4)
+        << which << hint("def.maxMotorTorque = maxMotorTorque");
+  }
+}
+
+TEST(Task6Joints, CarDrivesForwardUprightOnItsSuspension) {
+  // Wheels turning clockwise at 15 rad/s (r = 0.4 m: up to 6 m/s) drive the car to +x. Each
+  // wheel stays below the chassis, under its anchor, within a wheel radius of travel.
+  const int steps = 180;  // 3 s
+  const Box2DResult r = runScene("car", steps);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.bodies.size(), 3u);
+  ASSERT_EQ(r.builtJoints.size(), 2u)
+      << currentTask() << ": " << built("car", r) << hint("createWheel must create the joints");
+  const Vec2 start = r.poses[0][0].position - kDt * r.poses[0][0].velocity;
+  const double travel = r.poses.back()[0].position.x() - start.x();
+  EXPECT_GE(travel, 3.0)
+      << currentTask() << ": the chassis moved " << travel << " m along x in " << steps * kDt
+      << " s. " << built("car", r)
+      << hint(
+             "motorSpeed < 0 turns the wheels clockwise, which rolls the car to +x; the "
+             "motor needs enableMotor and maxMotorTorque");
+  for (int s = 0; s < steps; ++s) {
+    const harness::BodyPose& chassis = r.poses[s][0];
+    ASSERT_LT(std::abs(chassis.angle), 0.5)
+        << currentTask() << ": chassis angle " << chassis.angle << " rad at step " << s + 1
+        << hint("the car must stay upright: check the suspension's spring (b2LinearStiffness)");
+    const double c = std::cos(chassis.angle), sn = std::sin(chassis.angle);
+    for (int k = 0; k < 2; ++k) {
+      // The wheel's centre in the chassis frame, against its anchor there (where it was built).
+      const Vec2 d = r.poses[s][k + 1].position - chassis.position;
+      const Vec2 local(c * d.x() + sn * d.y(), -sn * d.x() + c * d.y());
+      const Vec2 anchor = r.builtJoints[k].localAnchorA;
+      ASSERT_TRUE(std::abs(local.x() - anchor.x()) < 0.05 &&
+                  std::abs(local.y() - anchor.y()) < 0.4 && local.y() < 0)
+          << currentTask() << ": wheel " << k << " at step " << s + 1 << " is at " << str(local)
+          << " in the chassis frame, its anchor at " << str(anchor)
+          << hint(
+                 "the wheel slides only along the axis and its spring keeps it near the "
+                 "anchor: stiffness and damping from b2LinearStiffness");
+    }
+  }
+}
+
+// Mouse joint ---------------------------------------------------------------------------------
+
+// Where the mouse_drag scene's box is after one step: a point on the box to grab.
+Vec2 boxPosition() {
+  const Box2DResult r = runScene("mouse_drag", 1);
+  return r.ok() && !r.poses.empty() && !r.poses[0].empty() ? r.poses[0][0].position : Vec2(0, 0.25);
+}
+
+TEST(Task6Joints, MouseJointIsSetUpByHand) {
+  const Vec2 grab = boxPosition();
+  const Box2DResult r = runScene("mouse_drag", 2, {{DragEvent::Kind::Begin, 0, grab}});
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.bodies.size(), 1u);
+  ASSERT_EQ(r.dragJoints.size(), 1u)
+      << currentTask() << ": beginDrag at " << str(grab) << " returned no joint"
+      << hint("beginDrag must create a b2MouseJoint with world.CreateJoint(&def) and return it");
+  const JointInfo& j = r.dragJoints[0];
+  const double m = r.bodies[0].mass;
+  const std::string input = "mouse joint as beginDrag returned it: " + describe(r, j) +
+                            ", box mass " + std::to_string(m) + " kg";
+  EXPECT_TRUE(isJoint(r, j, "mouse", -1, 0))
+      << hint("b2MouseJointDef has no Initialize(): set def.bodyA = ground, def.bodyB = body");
+  EXPECT_VEC_NEAR(j.target, grab, 1e-5) << input << hint("def.target = target");
+  EXPECT_CLOSE(j.maxForce, 1000 * m, relTol(1000 * m, 1e-5))
+      << input << hint("def.maxForce = 1000 * body->GetMass(): a force that scales with the body");
+  // The ground is static (mass 0): b2LinearStiffness uses the box's mass alone.
+  const StiffnessDamping expected = linearStiffness(5.0, 0.7, 0.0, m);
+  EXPECT_CLOSE(j.stiffness, expected.stiffness, relTol(expected.stiffness, 1e-4))
+      << input
+      << hint(
+             "b2LinearStiffness(def.stiffness, def.damping, 5.0f, 0.7f, ground, body): with a "
+             "static ground, m = the body's mass, stiffness = m (2π 5 Hz)²");
+  EXPECT_CLOSE(j.damping, expected.damping, relTol(expected.damping, 1e-4))
+      << input << hint("damping = 2 m 0.7 (2π 5 Hz), from the same b2LinearStiffness call");
+}
+
+TEST(Task6Joints, MouseDragPullsTheBoxToTheTarget) {
+  // Grab the box at its centre, move the target 1 m right and 2 m up: after 2 s the box hangs
+  // at the target (a 5 Hz spring sags by g / ω² = 1 cm).
+  const Vec2 grab = boxPosition(), target = grab + Vec2(1, 2);
+  const int steps = 120;
+  const Box2DResult r = runScene(
+      "mouse_drag", steps, {{DragEvent::Kind::Begin, 0, grab}, {DragEvent::Kind::Move, 1, target}});
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.dragJoints.size(), 1u)
+      << currentTask() << ": beginDrag at " << str(grab) << " returned no joint"
+      << hint("beginDrag must create a b2MouseJoint and return it");
+  EXPECT_VEC_NEAR(r.poses.back()[0].position, target, 0.05)
+      << "box after " << steps * kDt << " s of a drag grabbed at " << str(grab) << " and moved to "
+      << str(target) << "; " << describe(r, r.dragJoints[0])
+      << hint(
+             "moveDrag must call joint->SetTarget(target); beginDrag needs maxForce, "
+             "stiffness and damping set, and must wake the body");
+}
+
+TEST(Task6Joints, MouseJointIsDestroyedWhenTheDragEnds) {
+  // Two drags one after the other: the world holds one more joint only while a drag lasts, and
+  // the box falls back once released.
+  const Vec2 grab = boxPosition(), lifted = grab + Vec2(0, 2);
+  const int steps = 130;
+  const std::vector<DragEvent> script = {{DragEvent::Kind::Begin, 10, grab},
+                                         {DragEvent::Kind::Move, 11, lifted},
+                                         {DragEvent::Kind::End, 70, lifted},
+                                         {DragEvent::Kind::Begin, 100, grab},
+                                         {DragEvent::Kind::End, 110, grab}};
+  const Box2DResult r = runScene("mouse_drag", steps, script);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.dragJoints.size(), 2u)
+      << currentTask() << ": two drags (steps 10-70 and 100-110, 0-based), beginDrag returned "
+      << r.dragJoints.size() << " joints" << hint("beginDrag must create and return the joint");
+  ASSERT_EQ(r.jointCounts.size(), static_cast<std::size_t>(steps));
+  const int before = static_cast<int>(r.builtJoints.size());
+  for (int s = 0; s < steps; ++s) {
+    const bool dragging = (s >= 10 && s < 70) || (s >= 100 && s < 110);
+    ASSERT_EQ(r.jointCounts[s], before + (dragging ? 1 : 0))
+        << currentTask() << ": world joint count after " << s + 1 << " steps, with drags "
+        << "begun at the start of steps 10 and 100 and ended at the start of steps 70 and 110 "
+        << "(0-based); the scene has " << before << " joints of its own"
+        << hint("endDrag must destroy the joint: world.DestroyJoint(joint); joint = nullptr");
+  }
+  const double held = r.poses[69][0].position.y(), released = r.poses[99][0].position.y();
+  EXPECT_LT(released, held - 1.0) << currentTask() << ": box at y=" << held
+                                  << " m when released (after 70 steps), at y=" << released
+                                  << " m 0.5 s later"
+                                  << hint("once the drag ends nothing may hold the box");
+}
+
+}  // namespace
+}  // namespace a6::test
