@@ -1,0 +1,298 @@
+// Task 2 — the forces of the slide "Some forces". Oracles: each formula on tiny inputs with
+// values computed by hand, in several directions, and externalForce as the sum of the parts
+// (with the contacts measured by the framework's contactWith, as the student's code must).
+#include <cmath>
+
+#include "suite.h"
+
+namespace a6::test {
+namespace {
+
+// A particle at x with velocity v, mass m and temperature T.
+Particle particle(Vec2 x, Vec2 v = Vec2::Zero(), double m = 1.0, double T = 293.15) {
+  Particle p;
+  p.x = x;
+  p.v = v;
+  p.m = m;
+  p.temperature = T;
+  return p;
+}
+
+// An environment with every force switched off: tests switch on what they check.
+Environment quiet() {
+  Environment env;
+  env.gravity = Vec2::Zero();
+  env.airTemperature = 293.15;
+  env.buoyancy = 0;
+  env.drag = 0;
+  env.repulsion = 0;
+  return env;
+}
+
+std::string input(const harness::ForcesRequest& r) {
+  std::ostringstream out;
+  const Particle& p = r.particle;
+  const Environment& env = r.env;
+  out << "input: particle " << str(p) << " T=" << p.temperature << "; env g=" << str(env.gravity)
+      << ", T_air=" << env.airTemperature << ", b=" << env.buoyancy << ", k_d=" << env.drag
+      << ", k_r=" << env.repulsion;
+  for (const HalfPlane& plane : env.planes) {
+    out << ", half-plane{n=" << str(plane.normal) << ", offset=" << plane.offset << "}";
+  }
+  for (const CircleObstacle& c : env.circles) {
+    out << ", circle{c=" << str(c.center) << ", r=" << c.radius << "}";
+  }
+  out << "; contact{depth=" << r.contact.depth << ", n=" << str(r.contact.normal) << "}";
+  return out.str();
+}
+
+harness::ForcesResult forcesOf(const harness::ForcesRequest& r) {
+  harness::ForcesResult result = student().forces(r);
+  EXPECT_TRUE(result.ok()) << currentTask() << ": your code failed: " << result.error;
+  return result;
+}
+
+harness::ForcesRequest request(const Particle& p, const Environment& env,
+                               const Contact& contact = Contact{-1, Vec2(0, 1)}) {
+  harness::ForcesRequest r;
+  r.particle = p;
+  r.env = env;
+  r.contact = contact;
+  return r;
+}
+
+// The sum that externalForce must return, from the slide's formulas and the framework's contacts.
+Vec2 expectedTotal(const Particle& p, const Environment& env) {
+  Vec2 f = p.m * env.gravity + env.buoyancy * (p.temperature - env.airTemperature) * Vec2(0, 1) -
+           env.drag * p.v;
+  for (const HalfPlane& plane : env.planes) {
+    const Contact c = contactWith(plane, p.x);
+    if (c.depth > 0) f += env.repulsion * c.depth * c.normal;
+  }
+  for (const CircleObstacle& circle : env.circles) {
+    const Contact c = contactWith(circle, p.x);
+    if (c.depth > 0) f += env.repulsion * c.depth * c.normal;
+  }
+  return f;
+}
+
+// Gravity ---------------------------------------------------------------------------------------
+
+TEST(Task2Forces, GravityIsMassTimesG) {
+  // m = 2.5 kg, g = (0, -9.81): f = (0, -24.525) N.
+  Environment env = quiet();
+  env.gravity = Vec2(0, -9.81);
+  const auto r = request(particle(Vec2(0.3, 0.4), Vec2::Zero(), 2.5), env);
+  EXPECT_VEC_NEAR(forcesOf(r).gravity, Vec2(0, -24.525), 1e-12)
+      << input(r) << hint("gravity is a force, m g: multiply g by the particle's mass p.m");
+}
+
+TEST(Task2Forces, GravityIsProportionalToMass) {
+  Environment env = quiet();
+  env.gravity = Vec2(0.5, -9.81);
+  const auto light = request(particle(Vec2(0, 0), Vec2::Zero(), 0.2), env);
+  const auto heavy = request(particle(Vec2(0, 0), Vec2::Zero(), 5.0), env);
+  const Vec2 fLight = forcesOf(light).gravity;
+  const Vec2 fHeavy = forcesOf(heavy).gravity;
+  EXPECT_VEC_NEAR(fLight, Vec2(0.1, -1.962), 1e-12)
+      << input(light) << hint("gravity is m g, with the particle's own mass");
+  EXPECT_VEC_NEAR(fHeavy, 25.0 * fLight, 1e-9)
+      << input(heavy) << " vs. " << input(light)
+      << hint("a 25 times heavier particle feels a 25 times larger gravity force: f = m g");
+}
+
+TEST(Task2Forces, GravityFollowsGInAnyDirection) {
+  for (int k = 0; k < 8; ++k) {
+    const double angle = 2 * M_PI * k / 8 + 0.1;
+    Environment env = quiet();
+    env.gravity = 3.7 * Vec2(std::cos(angle), std::sin(angle));
+    const auto r = request(particle(Vec2(1, -2), Vec2(0.5, 0.5), 1.7), env);
+    EXPECT_VEC_NEAR(forcesOf(r).gravity, 1.7 * env.gravity, 1e-9)
+        << input(r) << hint("use the whole vector g (both components), not just its y component");
+    if (HasFailure()) break;  // the first failure says enough
+  }
+}
+
+// Buoyancy --------------------------------------------------------------------------------------
+
+TEST(Task2Forces, HotParticlesRise) {
+  // b = 0.02 N/K, T - T_air = 400 - 300 = 100 K: f = (0, 2) N.
+  Environment env = quiet();
+  env.buoyancy = 0.02;
+  env.airTemperature = 300;
+  const auto r = request(particle(Vec2(0, 0), Vec2::Zero(), 3.0, 400), env);
+  EXPECT_VEC_NEAR(forcesOf(r).buoyancy, Vec2(0, 2), 1e-12)
+      << input(r)
+      << hint(
+             "buoyancy is b (T - T_air) (0, 1): a particle hotter than the air is "
+             "pushed up, whatever its mass");
+}
+
+TEST(Task2Forces, ColdParticlesSink) {
+  // b = 0.02 N/K, T - T_air = 250 - 300 = -50 K: f = (0, -1) N.
+  Environment env = quiet();
+  env.buoyancy = 0.02;
+  env.airTemperature = 300;
+  const auto r = request(particle(Vec2(0, 0), Vec2::Zero(), 1.0, 250), env);
+  EXPECT_VEC_NEAR(forcesOf(r).buoyancy, Vec2(0, -1), 1e-12)
+      << input(r)
+      << hint(
+             "b (T - T_air) (0, 1) keeps its sign: colder than the air means a "
+             "downward force (no abs, no clamping)");
+}
+
+TEST(Task2Forces, NoBuoyancyAtAirTemperature) {
+  Environment env = quiet();
+  env.buoyancy = 0.05;
+  env.airTemperature = 350;
+  const auto r = request(particle(Vec2(0, 0), Vec2(1, 1), 2.0, 350), env);
+  EXPECT_VEC_NEAR(forcesOf(r).buoyancy, Vec2(0, 0), 1e-12)
+      << input(r)
+      << hint(
+             "buoyancy depends on the difference T - T_air (use the airTemperature "
+             "parameter): a particle at the air's temperature floats");
+}
+
+// Drag ------------------------------------------------------------------------------------------
+
+TEST(Task2Forces, DragOpposesVelocityInAnyDirection) {
+  for (const double kd : {0.7, 2.0}) {
+    for (int k = 0; k < 12; ++k) {
+      const double angle = 2 * M_PI * k / 12 + 0.3;
+      Environment env = quiet();
+      env.drag = kd;
+      const Vec2 v = 2.5 * Vec2(std::cos(angle), std::sin(angle));
+      const auto r = request(particle(Vec2(0.2, 0.1), v, 1.5), env);
+      EXPECT_VEC_NEAR(forcesOf(r).drag, -kd * v, 1e-9)
+          << input(r)
+          << hint(
+                 "drag is -k_d v: against the velocity, proportional to it (not to "
+                 "the mass, not to the speed squared)");
+      if (HasFailure()) break;  // the first failure says enough
+    }
+    if (HasFailure()) break;
+  }
+}
+
+// Repulsion -------------------------------------------------------------------------------------
+
+TEST(Task2Forces, RepulsionPushesOutOfAFloor) {
+  // A floor contact: depth 0.05 m, normal (0, 1), k_r = 400 N/m: f = (0, 20) N.
+  Environment env = quiet();
+  env.repulsion = 400;
+  const auto r = request(particle(Vec2(0, -0.05)), env, Contact{0.05, Vec2(0, 1)});
+  EXPECT_VEC_NEAR(forcesOf(r).repulsion, Vec2(0, 20), 1e-12)
+      << input(r) << hint("repulsion is k_r d n: along the contact normal, out of the obstacle");
+}
+
+TEST(Task2Forces, RepulsionFollowsADiagonalNormal) {
+  // depth 0.1 m, normal (0.6, -0.8), k_r = 250 N/m: f = 25 (0.6, -0.8) = (15, -20) N.
+  Environment env = quiet();
+  env.repulsion = 250;
+  const auto r = request(particle(Vec2(0, 0)), env, Contact{0.1, Vec2(0.6, -0.8)});
+  EXPECT_VEC_NEAR(forcesOf(r).repulsion, Vec2(15, -20), 1e-12)
+      << input(r) << hint("use the contact's own normal n (both components), not (0, 1)");
+}
+
+TEST(Task2Forces, NoRepulsionOutsideOrOnTheSurface) {
+  Environment env = quiet();
+  env.repulsion = 1000;
+  for (const double depth : {-0.3, -1e-6, 0.0}) {
+    for (const Vec2& n : {Vec2(0, 1), Vec2(-0.8, 0.6)}) {
+      const auto r = request(particle(Vec2(0, 0)), env, Contact{depth, n});
+      EXPECT_VEC_NEAR(forcesOf(r).repulsion, Vec2(0, 0), 1e-12)
+          << input(r)
+          << hint(
+                 "repulsion acts only while the particle is inside (depth > 0); "
+                 "outside, a negative depth would pull it into the obstacle");
+      if (HasFailure()) break;  // the first failure says enough
+    }
+    if (HasFailure()) break;
+  }
+}
+
+// externalForce ---------------------------------------------------------------------------------
+
+TEST(Task2Forces, ExternalForceAddsGravityBuoyancyAndDrag) {
+  // m = 0.5, g = (0, -10): (0, -5); b = 0.01, T - T_air = 200: (0, 2);
+  // k_d = 0.25, v = (2, -4): (-0.5, 1). Sum: (-0.5, -2).
+  Environment env = quiet();
+  env.gravity = Vec2(0, -10);
+  env.buoyancy = 0.01;
+  env.airTemperature = 300;
+  env.drag = 0.25;
+  const auto r = request(particle(Vec2(0, 5), Vec2(2, -4), 0.5, 500), env);
+  EXPECT_VEC_NEAR(forcesOf(r).total, Vec2(-0.5, -2), 1e-12)
+      << input(r) << hint("externalForce is the sum gravity + buoyancy + drag (+ repulsion)");
+}
+
+TEST(Task2Forces, ExternalForceAddsEveryObstacleItIsIn) {
+  // A particle inside a floor and a circle at once, outside a wall and another circle.
+  Environment env = quiet();
+  env.gravity = Vec2(0, -9.81);
+  env.buoyancy = 0.002;
+  env.airTemperature = 300;
+  env.drag = 0.3;
+  env.repulsion = 500;
+  env.planes.push_back({Vec2(0, 1), 0.0});        // floor y < 0
+  env.planes.push_back({Vec2(-0.6, 0.8), -3.0});  // a tilted wall far to the right
+  env.circles.push_back({Vec2(0.1, -0.2), 0.25});
+  env.circles.push_back({Vec2(-2, 1), 0.5});
+  const Particle p = particle(Vec2(0.2, -0.04), Vec2(0.5, -1.5), 0.4, 320);
+
+  // The set-up puts the particle in exactly one plane and one circle.
+  ASSERT_GT(contactWith(env.planes[0], p.x).depth, 0);
+  ASSERT_LE(contactWith(env.planes[1], p.x).depth, 0);
+  ASSERT_GT(contactWith(env.circles[0], p.x).depth, 0);
+  ASSERT_LE(contactWith(env.circles[1], p.x).depth, 0);
+
+  const auto r = request(p, env);
+  EXPECT_VEC_NEAR(forcesOf(r).total, expectedTotal(p, env), 1e-9)
+      << input(r)
+      << hint(
+             "add repulsionForce(contactWith(obstacle, p.x), env.repulsion) for "
+             "EVERY half-plane and EVERY circle in env, on top of gravity, "
+             "buoyancy and drag");
+}
+
+TEST(Task2Forces, ExternalForceAddsTwoOverlappingCircles) {
+  // Inside two circles and a diagonal half-plane: three repulsions add up.
+  Environment env = quiet();
+  env.gravity = Vec2(0, -9.81);
+  env.repulsion = 200;
+  env.planes.push_back({Vec2(0.6, 0.8), 0.3});
+  env.circles.push_back({Vec2(0, 0), 0.5});
+  env.circles.push_back({Vec2(0.5, 0), 0.5});
+  const Particle p = particle(Vec2(0.3, -0.1), Vec2::Zero(), 1.2);
+  ASSERT_GT(contactWith(env.planes[0], p.x).depth, 0);
+  ASSERT_GT(contactWith(env.circles[0], p.x).depth, 0);
+  ASSERT_GT(contactWith(env.circles[1], p.x).depth, 0);
+
+  const auto r = request(p, env);
+  EXPECT_VEC_NEAR(forcesOf(r).total, expectedTotal(p, env), 1e-9)
+      << input(r)
+      << hint(
+             "every obstacle the particle is inside pushes on its own: sum them "
+             "all, using each obstacle's own depth and normal from contactWith");
+}
+
+TEST(Task2Forces, ObstaclesOutsideAddNothing) {
+  // Outside every obstacle, with a strong k_r: only gravity and drag remain.
+  // m = 2, g = (0, -10): (0, -20); k_d = 0.5, v = (1, 2): (-0.5, -1). Sum: (-0.5, -21).
+  Environment env = quiet();
+  env.gravity = Vec2(0, -10);
+  env.drag = 0.5;
+  env.repulsion = 1e4;
+  env.planes.push_back({Vec2(0, 1), -1.0});
+  env.planes.push_back({Vec2(0.8, -0.6), -2.0});
+  env.circles.push_back({Vec2(3, 3), 1.0});
+  const auto r = request(particle(Vec2(0.5, 0.5), Vec2(1, 2), 2.0), env);
+  EXPECT_VEC_NEAR(forcesOf(r).total, Vec2(-0.5, -21), 1e-9)
+      << input(r)
+      << hint(
+             "an obstacle the particle is not inside (depth <= 0) adds nothing: "
+             "check the depth before adding k_r d n");
+}
+
+}  // namespace
+}  // namespace a6::test

@@ -1,0 +1,38 @@
+// WRONG VERSION (task 2): buoyancyForce uses (T_air - T) instead of (T - T_air): hot particles sink
+// and cold ones rise.
+// Task 2 — the forces (slide "Some forces").
+#include "a6/forces.h"
+
+namespace a6 {
+
+// Gravity: m g.
+Vec2 gravityForce(const Particle& p, const Vec2& g) { return p.m * g; }
+
+// Buoyancy: b (T - T_air) (0, 1).
+Vec2 buoyancyForce(const Particle& p, double b, double airTemperature) {
+  return b * (airTemperature - p.temperature) * Vec2(0, 1);
+}
+
+// Drag: -k_d v.
+Vec2 dragForce(const Particle& p, double kd) { return -kd * p.v; }
+
+// Repulsion: k_r d n, only while inside the obstacle.
+Vec2 repulsionForce(const Contact& contact, double kr) {
+  if (contact.depth <= 0) return Vec2::Zero();
+  return kr * contact.depth * contact.normal;
+}
+
+// All external forces on one particle.
+Vec2 externalForce(const Particle& p, const Environment& env) {
+  Vec2 f = gravityForce(p, env.gravity) + buoyancyForce(p, env.buoyancy, env.airTemperature) +
+           dragForce(p, env.drag);
+  for (const HalfPlane& plane : env.planes) {
+    f += repulsionForce(contactWith(plane, p.x), env.repulsion);
+  }
+  for (const CircleObstacle& circle : env.circles) {
+    f += repulsionForce(contactWith(circle, p.x), env.repulsion);
+  }
+  return f;
+}
+
+}  // namespace a6

@@ -1,0 +1,32 @@
+// WRONG VERSION (task 3): v += f dt instead of v += f / m dt: the force is not divided by the mass.
+// Task 3 — time stepping (slides "Time stepping", "Instability").
+#include "a6/mass_spring_system.h"
+
+namespace a6 {
+
+void MassSpringSystem::step(double dt) {
+  // 1. Initialise each force with the external forces.
+  for (Particle& p : particles) p.f = externalForce(p);
+
+  // 2. Add every spring's force to both of its particles.
+  for (const Spring& s : springs) {
+    const Vec2 f = springForce(s);
+    s.p2->f += f;
+    s.p1->f -= f;
+  }
+
+  // 3. Symplectic Euler: velocity first, then position with the new velocity.
+  for (Particle& p : particles) {
+    if (p.pinned) continue;
+    p.v += p.f * dt;
+    p.x += p.v * dt;
+  }
+}
+
+void MassSpringSystem::advance(double frameDt, int substeps) {
+  // n substeps of frameDt / n: smaller steps keep stiff springs stable.
+  const double dt = frameDt / substeps;
+  for (int k = 0; k < substeps; ++k) step(dt);
+}
+
+}  // namespace a6
