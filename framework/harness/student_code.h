@@ -16,6 +16,7 @@
 #include "a6/cloth.h"
 #include "a6/forces.h"
 #include "a6/particle_system.h"
+#include "scenes/scene.h"
 #include "scenes/snapshot.h"
 
 namespace a6::harness {
@@ -148,6 +149,18 @@ struct Box2DResult : Outcome {
   std::vector<JointInfo> dragJoints;         ///< each mouse joint, as beginDrag returned it
 };
 
+// Scenes (scenes/scene.h): what golden images are rendered from -------------------------------
+struct SceneRequest {
+  std::string scene;        ///< a name from sceneNames()
+  std::vector<int> frames;  ///< record a snapshot after each of these frame counts (0: the
+                            ///< initial state); any order, repeats allowed
+  bool useDefaults = true;  ///< run with defaultParams(scene)...
+  SceneParams params;       ///< ...or, when useDefaults is false, with these
+};
+struct SceneResult : Outcome {
+  std::vector<Snapshot> snapshots;  ///< snapshots[k] after request.frames[k] frames
+};
+
 /// The student's code. Every call catches what it can and reports it in `error`.
 class StudentCode {
  public:
@@ -159,6 +172,9 @@ class StudentCode {
   virtual ParticlesResult emit(const EmitRequest& request) = 0;
   virtual ParticlesResult runParticles(const ParticleRunRequest& request) = 0;
   virtual Box2DResult runBox2D(const Box2DRequest& request) = 0;
+  /// Runs a registered scene with the student's code and records snapshots. Implementations
+  /// that cannot run scenes answer with an error.
+  virtual SceneResult runScene(const SceneRequest& request);
 };
 
 /// The in-process implementation: calls the six files linked into this binary. `reference`

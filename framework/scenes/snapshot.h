@@ -29,10 +29,13 @@ struct ShapeData {
   double angle = 0;           ///< body angle, rad (to draw a circle's spoke)
 };
 
-/// A joint, drawn as a line between its two anchors.
+/// A joint, drawn as Box2D's testbed draws it: centreA - anchorA - anchorB - centreB (the
+/// ground's side is left out, so a pendulum shows its rod from the pivot to the bob).
 struct JointData {
   std::string type;  ///< revolute, prismatic, distance, wheel, mouse, other
   Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();  ///< world, m
+  Vec2 centerA = Vec2::Zero(), centerB = Vec2::Zero();  ///< the bodies' origins, world, m
+  bool groundA = false, groundB = false;  ///< the body on that side is static (the ground)
 };
 
 /// The part of the world a picture shows: a fixed camera per scene.
