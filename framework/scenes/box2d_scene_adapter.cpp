@@ -110,7 +110,7 @@ Snapshot toSnapshot(const Box2DScene& scene) {
   for (auto it = others.rbegin(); it != others.rend(); ++it) addShapes(*it, -2, snap.shapes);
 
   // Joints in creation order (Box2D lists the newest first).
-  for (const b2Joint* j = scene.world->GetJointList(); j != nullptr; j = j->GetNext()) {
+  for (b2Joint* j = scene.world->GetJointList(); j != nullptr; j = j->GetNext()) {
     JointData data;
     data.type = jointType(j->GetType());
     data.anchorA = toVec(j->GetAnchorA());
