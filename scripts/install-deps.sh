@@ -19,6 +19,7 @@ packages=(
   libglfw3-dev       # GLFW 3.3: the viewer's window
   libimgui-dev       # Dear ImGui: the viewer's widgets
   xvfb xauth         # a virtual X server for the viewer's smoke test
+  fonts-dejavu-core  # the viewer panel's font (Greek letters, ×)
 )
 
 missing=()
