@@ -12,7 +12,11 @@ packages=(
   libbox2d-dev       # Box2D 2.4.1
   libgtest-dev       # GoogleTest 1.12
   libbenchmark-dev   # Google Benchmark
-  nlohmann-json3-dev # JSON (manifests, reports)
+  nlohmann-json3-dev # JSON (manifests, reports, the probe's pipe)
+  libtomlplusplus-dev  # TOML (the grader's rubric)
+  libcli11-dev       # command lines of the grader's tools
+  libarchive-dev     # reading submitted zips and tarballs
+  libseccomp-dev     # the probe's system-call filter
   libstb-dev         # stb_image_write / stb_image (PNG)
   libosmesa6-dev     # OSMesa: headless OpenGL (Mesa 22.3, llvmpipe)
   libegl-dev         # EGL (surfaceless headless backend)
