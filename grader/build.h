@@ -12,35 +12,60 @@
 
 namespace a6::grader {
 
-/// What was built once, read from BUILD/grader/kit.json (written by CMake).
+/// What was built once, read from BUILD/grader/kit.json (written by CMake,
+/// grader/cmake/intake_build.cmake). What a compile reads besides the system headers sits in
+/// `dir`; the link also reads `probeMain` and `linkInputs`.
 struct Kit {
   std::string compiler;                    ///< absolute path of the C++ compiler
   std::vector<std::string> compileFlags;   ///< pinned: -std=c++17 -O2 -ffp-contract=off -I...
-  std::vector<std::string> linkInputs;     ///< probe main object, probe kit library, -lbox2d, ...
-  std::filesystem::path starterObjects;    ///< folder with <task>.o of the starter
+  std::vector<std::string> probeMain;      ///< the probe's main object(s), linked first
+  std::vector<std::string> linkInputs;     ///< after the six task objects: the probe kit
+                                           ///< library, Box2D, libseccomp
+  std::filesystem::path starterObjects;    ///< folder with <task>.o (and <task>.syms: its
+                                           ///< defined symbols, demangled) of the starter
+  std::filesystem::path dir;               ///< the kit folder: staged headers, starter objects
+  /// Hidden from the compiler and the linker, except `dir`, the work folder and the student's
+  /// files: the repository (solution, hidden tests, goldens) and the build tree. A caller may
+  /// add more (a batch's other submissions) before buildProbe.
+  std::vector<std::filesystem::path> secrets;
   std::string error;
   bool ok() const { return error.empty(); }
 };
 Kit loadKit(const std::filesystem::path& kitJson);
 
+/// BUILD/grader/kit.json of the build tree this grader was built in.
+std::filesystem::path defaultKitPath();
+
 struct TaskBuild {
   std::string file;  ///< e.g. "cloth.cpp"
-  enum class Status { Compiled, Missing, CompileError, TimedOut } status = Status::Missing;
-  std::string messages;  ///< the compiler's output (capped), for the report
+  /// LinkError: it compiled, but the probe linked only with the starter's object in its place
+  /// (it defines main() or a symbol of the framework, or lacks a function the framework calls).
+  enum class Status { Compiled, Missing, CompileError, TimedOut, LinkError } status =
+      Status::Missing;
+  std::string messages;  ///< the compiler's (and linker's) output (capped), for the report
+  double seconds = 0;    ///< compile time, s
   bool usesStarter() const { return status != Status::Compiled; }
 };
 
 struct Build {
   std::string error;                  ///< the probe could not be linked at all
-  std::filesystem::path probe;        ///< the linked probe executable
+  std::filesystem::path probe;        ///< the linked probe executable (workDir/a6_probe)
   std::vector<TaskBuild> tasks;       ///< in task order
-  double seconds = 0;
+  double seconds = 0;                 ///< compiling and linking, wall clock
+  double linkSeconds = 0;             ///< of which linking (all attempts)
+  std::vector<std::string> notes;     ///< sandbox protections that could not be applied (for
+                                      ///< the TA: e.g. not root, so nothing could be hidden)
   bool ok() const { return error.empty(); }
 };
 
-/// Compiles each file of `intake` in `workDir` (sandboxed, the grader's secrets hidden) and links
-/// the probe.
+/// Limits for one compile or link: 60 s wall and CPU, 512 MiB address space, 64 MiB files,
+/// a few processes (the driver runs cc1plus, as, collect2, ld).
+Limits defaultCompileLimits();
+
+/// Compiles each file of `intake` in `workDir` (sandboxed, the grader's secrets hidden; `jobs`
+/// files at a time) and links the probe, workDir/a6_probe. workDir is created; objects go to
+/// workDir/obj/<task>/, the link happens in workDir/link/.
 Build buildProbe(const Kit& kit, const Intake& intake, const std::filesystem::path& workDir,
-                 const Limits& compileLimits = {});
+                 const Limits& compileLimits = defaultCompileLimits(), int jobs = 2);
 
 }  // namespace a6::grader

@@ -1,11 +1,20 @@
 // The out-of-process StudentCode: each request goes to the sandboxed probe over a pipe, and
 // comes back as plain data. A crash, a timeout or garbage fails that request with the reason,
 // and the next request starts a fresh probe.
+//
+// Design note: one probe, many requests, restarts on failure.
+// The probe is started at the first request and serves every request after it (starting a
+// process per request would cost more than most requests). When a request fails in a way that
+// leaves the probe's state unknown (it crashed, it ran past the request's time limit, it answered
+// garbage or wrote to its answer pipe between requests), the probe is killed and the next request
+// starts a fresh one in a fresh work dir. After `maxStarts` starts every further request fails
+// at once: a submission that crashes on every request must not take forever to grade.
 #pragma once
 
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "harness/student_code.h"
 #include "sandbox.h"
@@ -14,12 +23,22 @@ namespace a6::grader {
 
 class ProbeClient final : public harness::StudentCode {
  public:
-  /// `probe`: the linked probe executable; `workRoot`: where fresh working directories go.
+  /// `probe`: the linked probe executable; `workRoot`: where fresh working directories go
+  /// (workRoot/probe-1, probe-2, ...; each removed when its probe stops). Never throws.
   ProbeClient(std::filesystem::path probe, std::filesystem::path workRoot, Limits limits);
   ~ProbeClient() override;
 
   /// The wall-clock limit for the next requests (the rubric's per-test limit), s.
   void setRequestTimeout(double seconds);
+  /// Paths the probe must not see (the solution, hidden tests, goldens: Kit::secrets), and
+  /// paths inside them it must (SandboxSpec::hide, reveal). For the next probe started.
+  void setHidden(std::vector<std::filesystem::path> hide,
+                 std::vector<std::filesystem::path> reveal = {});
+  /// How many probes may be started in all (default 50).
+  void setMaxStarts(int starts);
+  /// Who the probe runs as when the grader is root (default nobody). Graders running side by
+  /// side should use a uid each: RLIMIT_NPROC and file access are per user.
+  void setUser(uid_t uid, gid_t gid);
 
   harness::SpringForceResult springForce(const harness::SpringForceRequest&) override;
   harness::ForcesResult forces(const harness::ForcesRequest&) override;
@@ -30,10 +49,16 @@ class ProbeClient final : public harness::StudentCode {
   harness::Box2DResult runBox2D(const harness::Box2DRequest&) override;
   harness::SceneResult runScene(const harness::SceneRequest&) override;
 
-  /// Everything the probe printed so far (capped), for the report; never parsed.
+  /// Everything the probes printed so far, capped at Limits::outputBytes over all of them, plus
+  /// a marker line where one ended ("[a6: probe 2 crashed: killed by SIGSEGV ...]"), for the
+  /// report; never parsed.
   std::string output() const;
   /// How many probes were started (1 + restarts after crashes and timeouts).
   int starts() const;
+  /// What the sandbox could not apply (not root, namespaces refused), once each.
+  std::vector<std::string> notes() const;
+  /// Stops the running probe, if any (the next request starts a fresh one).
+  void stop();
 
  private:
   struct Impl;

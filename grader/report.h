@@ -1,7 +1,18 @@
 // What a grading run produced, and the three ways it is written: Gradescope's results.json, a
 // self-contained HTML report, and a summary on the terminal.
+//
+// Scoring rules (score()):
+//   - a test counts for the first rubric item whose globs match it (Rubric::itemFor);
+//   - an item's points are split evenly among its tests: score = points * passed / tests, or,
+//     when all_or_nothing, points only if every one of its tests passed;
+//   - extra-credit items add to the score above the total (GradeReport::extraCredit);
+//   - an item that matches no test scores 0 and a test that matches no item scores nothing;
+//     both are listed in GradeReport::warnings (a rubric that needs fixing).
+// The score depends only on the rubric and on which tests passed: never on anything the probe
+// printed, never on timing. Scores are rounded to 1e-4 points.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -14,9 +25,9 @@ namespace a6::grader {
 
 /// One test as run in the grader's process.
 struct TestOutcome {
-  std::string name;      ///< "Task1Spring.AtRestGivesZeroForce"
+  std::string name;  ///< "Task1Spring.AtRestGivesZeroForce"
   bool passed = false;
-  std::string message;   ///< the failure messages (input, expected, actual, hint)
+  std::string message;  ///< the failure messages (input, expected, actual, hint)
   double seconds = 0;
   /// For golden-image checks: paths of the images (student, reference, difference), if any.
   std::vector<std::filesystem::path> images;
@@ -26,27 +37,52 @@ struct TestOutcome {
 struct ScoredItem {
   RubricItem item;
   double score = 0;
-  std::vector<const TestOutcome*> tests;
+  int passed = 0, failed = 0;
+  std::vector<const TestOutcome*> tests;  ///< point into GradeReport::tests
+  std::string number;  ///< "1.1", "1.2", ... (task, then the item's rank within its task)
 };
 
 struct GradeReport {
-  std::string submission;       ///< what was graded (path as given)
-  std::uint64_t seed = 0;       ///< the seed of the hidden checks, for a reproducible regrade
+  std::string submission;  ///< what was graded (path as given)
+  std::uint64_t seed = 0;  ///< the seed of the hidden checks, for a reproducible regrade
+  std::string rubricTitle;
+  std::filesystem::path rubricFile;
   Intake intake;
   Build build;
   std::vector<TestOutcome> tests;
   std::vector<ScoredItem> items;
-  double score = 0, maxScore = 0, extraCredit = 0;
+  double score = 0;        ///< regular points plus extra credit
+  double maxScore = 0;     ///< the rubric's total (extra credit not included)
+  double extraCredit = 0;  ///< the part of `score` earned by extra-credit items
   double seconds = 0;
-  std::string probeOutput;      ///< capped; shown to instructors only
-  std::vector<std::string> errors;  ///< grader-level problems (never crashes: they land here)
+  std::string probeOutput;            ///< capped; shown to instructors only
+  std::vector<std::string> warnings;  ///< rubric problems found while scoring
+  std::vector<std::string> notes;     ///< for instructors: sandbox protections that could not
+                                      ///< be applied (not root, ...), and the like
+  std::vector<std::string> errors;    ///< grader-level problems (never crashes: they land here)
 };
 
-/// Scores `tests` with `rubric` (tests that match no item are reported with 0 points).
+/// Scores `report.tests` with `rubric`: fills items, score, maxScore, extraCredit, warnings.
+/// Deterministic: the same tests and rubric give the same numbers.
 void score(GradeReport& report, const Rubric& rubric);
 
-void writeResultsJson(const GradeReport& report, const std::filesystem::path& file);
-void writeHtml(const GradeReport& report, const std::filesystem::path& file);
+/// results.json as Gradescope reads it (see docs/instructor.md): one test per rubric item.
+std::string resultsJson(const GradeReport& report);
+/// Writes resultsJson() atomically (a temporary file in the same folder, then rename). Returns
+/// an empty string, or what went wrong.
+std::string writeResultsJson(const GradeReport& report, const std::filesystem::path& file);
+
+/// One self-contained HTML page (inline CSS, images as data URIs); student-derived text escaped.
+std::string htmlReport(const GradeReport& report);
+std::string writeHtml(const GradeReport& report, const std::filesystem::path& file);
+
+/// A table per item (task, points, tests passed and failed) for the terminal.
 std::string terminalSummary(const GradeReport& report, bool color);
+
+/// Helpers, public for the tests.
+std::string htmlEscape(const std::string& text);
+std::string base64(const std::string& bytes);
+/// Writes `text` to `file` atomically; returns an empty string or the error.
+std::string writeFileAtomically(const std::filesystem::path& file, const std::string& text);
 
 }  // namespace a6::grader

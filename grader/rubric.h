@@ -1,6 +1,26 @@
 // The instructor's rubric (TOML): points per test or group of tests, visibility, extra credit,
 // per-test time limits. Scores come from here and from pass/fail decided in the grader's process,
 // never from anything the probe prints.
+//
+// The format (docs/instructor.md has the full description):
+//
+//   title = "Assignment 6"
+//   total = 100                 # must equal the sum of the items' points, extra credit excluded
+//   visibility = "visible"      # optional default for every item
+//   time_limit = 10             # optional default for every item, s
+//
+//   [[item]]
+//   name = "Task 1: spring force"
+//   task = 1                    # 1..6, or 0 for none
+//   tests = "Task1Spring.*"     # a glob over "Suite.Test", or a list of globs
+//   points = 15
+//   all_or_nothing = false      # optional
+//   extra_credit = false        # optional
+//   visibility = "visible"      # optional: visible | hidden | after_due_date | after_published
+//   time_limit = 10             # optional: wall-clock limit per probe request of its tests, s
+//
+// A test counts for the FIRST item (in file order) whose globs match it, and only for that one:
+// put narrow items (extra credit, hidden checks) before the broad item of their task.
 #pragma once
 
 #include <filesystem>
@@ -12,27 +32,43 @@ namespace a6::grader {
 enum class Visibility { Visible, Hidden, AfterDueDate, AfterPublished };
 const char* toString(Visibility v);  ///< Gradescope's names: visible, hidden, after_due_date, ...
 
-/// One rubric item: the tests whose full name (Suite.Test) matches `tests` (a glob with * and ?)
-/// share `points`, split evenly, or all-or-nothing when `allOrNothing`.
+/// One rubric item: the tests whose full name (Suite.Test) matches one of `tests` (globs with *
+/// and ?) and no earlier item share `points`, split evenly, or all-or-nothing when `allOrNothing`.
 struct RubricItem {
-  std::string name;          ///< shown in reports, e.g. "Task 1: spring force"
-  int task = 0;              ///< 1..6, or 0 for none
-  std::string tests;         ///< glob over "Suite.Test"
+  std::string name;                ///< shown in reports, e.g. "Task 1: spring force"
+  int task = 0;                    ///< 1..6, or 0 for none
+  std::vector<std::string> tests;  ///< globs over "Suite.Test"; a test matching any of them
   double points = 0;
   bool allOrNothing = false;
-  bool extraCredit = false;  ///< counts above the total (max_score 0 in the total)
+  bool extraCredit = false;  ///< counts above the total (max_score 0 in results.json)
   Visibility visibility = Visibility::Visible;
-  double timeLimitSeconds = 10;  ///< per request of each matching test
+  double timeLimitSeconds = 10;  ///< per request of each matching test, s
+  int line = 0;                  ///< where the item starts in the rubric file (for messages)
+
+  /// True when `testName` matches one of the globs (regardless of earlier items).
+  bool matches(const std::string& testName) const;
 };
 
 struct Rubric {
   std::string title;
   double totalPoints = 100;  ///< the sum of non-extra-credit points (checked on load)
   std::vector<RubricItem> items;
-  std::string error;         ///< a clear message with file and line when the file is invalid
+  std::filesystem::path file;  ///< where it was loaded from
+  std::string error;           ///< a clear message with file and line when the file is invalid
   bool ok() const { return error.empty(); }
+
+  /// The index of the item a test counts for: the first whose globs match it; -1 when none.
+  int itemFor(const std::string& testName) const;
 };
 
+/// Reads and validates a rubric file. Never throws: on any problem `error` says what and where
+/// ("rubric.toml:12: unknown key 'point' in [[item]] 3 (did you mean 'points'?)"), with every
+/// problem found, one per line.
 Rubric loadRubric(const std::filesystem::path& file);
+/// The same, from TOML text (`sourceName` names it in messages).
+Rubric parseRubric(const std::string& text, const std::string& sourceName);
+
+/// Glob matching over a whole string: `*` matches any run of characters, `?` any one.
+bool globMatch(const std::string& pattern, const std::string& text);
 
 }  // namespace a6::grader

@@ -1,6 +1,24 @@
 // Running an untrusted program: its own process, resource limits, a scrubbed environment, a
 // fresh empty working directory, no network, captured and capped output, privileges dropped
 // when the grader runs as root. See docs/instructor.md for what this does and does not protect.
+//
+// Design note: what the child gets, in order (grader/sandbox.cpp prepares everything before
+// fork(), so the child between fork and exec only makes system calls):
+//   1. its own session and process group (the parent kills the whole group with SIGKILL);
+//   2. as root: a private mount namespace where every `hide` path is covered (a directory by an
+//      empty read-only tmpfs, a file by /dev/null), with the `reveal` paths, the work dir and
+//      argv[0] bound back in place; then a new, empty network namespace;
+//   3. rlimits: CPU, address space, file size, open files, processes, no core files;
+//   4. stdin from /dev/null, stdout and stderr into one pipe the parent drains (capped at
+//      Limits::outputBytes; the rest is read and dropped so the child never blocks), the
+//      requested fds, every other fd closed;
+//   5. cwd = the fresh work dir; as root: setgroups(0), setgid/setuid to `uid`/`gid` (nobody);
+//      a parent-death signal (SIGKILL);
+//   6. no_new_privs and a seccomp filter: socket() fails with EACCES (the network stays off even
+//      where namespaces are not permitted, e.g. an unprivileged Docker container), io_uring,
+//      ptrace and process_vm_* fail with EPERM; with Limits::processes == 0, fork fails too;
+//   7. execve(argv[0], argv, env) with `env` only.
+// What could not be done (not root, namespaces refused) is said in Exit::notes, never silently.
 #pragma once
 
 #include <sys/types.h>
@@ -8,43 +26,62 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace a6::grader {
 
 struct Limits {
-  double wallSeconds = 10;        ///< per request (probe) or per command (compiler), s
-  double cpuSeconds = 60;         ///< RLIMIT_CPU for the whole process, s
-  std::size_t memoryBytes = 512u << 20;   ///< RLIMIT_AS
-  std::size_t fileSizeBytes = 1u << 20;   ///< RLIMIT_FSIZE
-  int processes = 1;              ///< extra processes it may create (RLIMIT_NPROC, counted per uid
-                                  ///< when privileges are dropped; otherwise a seccomp rule)
-  std::size_t outputBytes = 64u << 10;    ///< stdout+stderr kept; the rest is dropped
+  double wallSeconds = 10;               ///< per request (probe) or per command (compiler), s
+  double cpuSeconds = 60;                ///< RLIMIT_CPU for the whole process, s
+  std::size_t memoryBytes = 512u << 20;  ///< RLIMIT_AS
+  std::size_t fileSizeBytes = 1u << 20;  ///< RLIMIT_FSIZE
+  int processes = 1;  ///< extra processes (and threads) it may create: RLIMIT_NPROC
+                      ///< set to what its user runs at the start plus this (sandboxes
+                      ///< sharing a uid share that headroom: give concurrent graders
+                      ///< their own SandboxSpec::uid); 0 also refuses fork/clone in
+                      ///< the seccomp filter
+  std::size_t outputBytes = 64u << 10;  ///< stdout+stderr kept; the rest is dropped
+  int openFiles = 64;                   ///< RLIMIT_NOFILE
 };
 
 /// How a sandboxed process ended.
 struct Exit {
   enum class Kind { Exited, Signaled, TimedOut, FailedToStart } kind = Kind::Exited;
-  int code = 0;         ///< exit status or signal number
-  std::string output;   ///< captured stdout+stderr, capped at Limits::outputBytes
+  int code = 0;        ///< exit status or signal number
+  std::string output;  ///< captured stdout+stderr, capped at Limits::outputBytes
   bool outputTruncated = false;
   double wallSeconds = 0;
+  std::string error;  ///< FailedToStart: why ("exec /x/a6_probe: Permission denied ...")
+  std::vector<std::string> notes;  ///< protections that could not be applied, and why
   std::string describe() const;  ///< "exited with 1", "killed by SIGSEGV (segmentation fault)", ...
+  bool ok() const { return kind == Kind::Exited && code == 0; }
 };
 
 struct SandboxSpec {
-  std::vector<std::string> argv;        ///< argv[0] is an absolute path
-  std::filesystem::path workDir;        ///< created fresh and empty; the process's cwd
+  std::vector<std::string> argv;  ///< argv[0] is an absolute path
+  std::filesystem::path workDir;  ///< created fresh and empty (an existing one is emptied);
+                                  ///< the process's cwd; owned by `uid` when root drops
+  bool removeWorkDir = false;     ///< remove workDir when the process ends (the probe's);
+                                  ///< false keeps what it wrote (the compiler's object)
   Limits limits;
-  std::vector<std::string> env;         ///< the whole environment (scrubbed: PATH=/usr/bin:/bin)
-  std::vector<int> keepFds;             ///< parent fds passed to the child at the same numbers
+  std::vector<std::string> env = {"PATH=/usr/bin:/bin"};  ///< the whole environment
+  std::vector<int> keepFds;                 ///< parent fds passed to the child at the same numbers
+  std::vector<std::pair<int, int>> mapFds;  ///< {parent fd, child fd}: passed at another number
+                                            ///< (the probe's pipes become its fds 3 and 4)
   std::vector<std::filesystem::path> hide;  ///< paths the child must not be able to read
+  std::vector<std::filesystem::path> reveal;  ///< paths inside hidden ones that stay visible
+                                              ///< (the work dir and argv[0] always do)
+  uid_t uid = 65534;                          ///< who the child runs as when the grader is root
+  gid_t gid = 65534;                          ///< (nobody / nogroup)
 };
 
-/// Runs a command to completion in the sandbox (the compiler, the linker).
+/// Runs a command to completion in the sandbox (the compiler, the linker). Never throws for
+/// what the command does; a setup failure is Kind::FailedToStart with `error`.
 Exit runSandboxed(const SandboxSpec& spec);
 
-/// A long-running sandboxed child (the probe): started, talked to, killed.
+/// A long-running sandboxed child (the probe): started, talked to, killed. Its output is
+/// drained by a thread of this object, so it never blocks on a full pipe.
 class SandboxedProcess {
  public:
   /// Starts it; on failure `error()` says why.
@@ -55,8 +92,15 @@ class SandboxedProcess {
 
   const std::string& error() const { return error_; }
   pid_t pid() const { return pid_; }
+  /// False once it has exited (it stays unreaped, so its pid and group are not reused, until
+  /// stop()).
   bool alive();
-  /// Kills and reaps it; returns how it ended (with its captured output).
+  /// What it printed so far (capped).
+  std::string output() const;
+  /// Protections that could not be applied (see Exit::notes).
+  const std::vector<std::string>& notes() const;
+  /// Kills and reaps it; returns how it ended (with its captured output). Calling it again
+  /// returns the same Exit.
   Exit stop();
 
  private:

@@ -306,12 +306,6 @@ class InProcess final : public StudentCode {
 
 }  // namespace
 
-SceneResult StudentCode::runScene(const SceneRequest& request) {
-  SceneResult result;
-  result.error = "runScene('" + request.scene + "') is not supported by this implementation";
-  return result;
-}
-
 std::unique_ptr<StudentCode> makeInProcess(ForceModel reference) {
   return std::make_unique<InProcess>(std::move(reference));
 }

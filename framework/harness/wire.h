@@ -2,17 +2,43 @@
 //
 // Doubles must survive the trip exactly, NaN and infinities included (a NaN from student code
 // must reach the grader as NaN): encode every double so that decode(encode(x)) is bit-identical.
+//
+// Design note: the encoding.
+// A finite double is a JSON number, written by nlohmann::json in its shortest round-trip form
+// (-0.0 as "-0.0") and read back with strtod, which is exact. JSON has no NaN or infinity, so
+// those are strings: "inf", "-inf", "nan" (the positive quiet NaN), "-nan" (the negative one,
+// what 0.0/0.0 gives on x86), and "nan:0x7ff0000000000001" for any other NaN, with its bits.
+// Vectors are [x, y]; structures are objects keyed by their C++ field names; enums are
+// lower-case strings. Text that is not valid UTF-8 (an exception message from student code) is
+// written with U+FFFD in place of the bad bytes, never refused.
+//
+// Framing on a byte stream: a 4-byte little-endian length, then that many bytes of JSON text.
+// A length above kMaxFrameBytes is garbage, never a reason to allocate.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "harness/student_code.h"
 
 namespace a6::wire {
 
-/// A request: {"kind": "springForce" | "forces" | "simulate" | "buildCloth" | "emit" |
-/// "runParticles" | "runBox2D" | "runScene", "body": {...}}.
+/// Thrown by every decoder on malformed input; the message says what and where
+/// ("SimulateResult: states[2][5]: missing field 'x'").
+struct Malformed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Doubles, one at a time (exposed for the tests) --------------------------------------------------
+nlohmann::json encodeDouble(double x);
+double decodeDouble(const nlohmann::json& j);  ///< throws Malformed
+
+// Requests: {"kind": "springForce" | "forces" | "simulate" | "buildCloth" | "emit" |
+// "runParticles" | "runBox2D" | "runScene", "body": {...}}
+// -----------------------------------------
 nlohmann::json encodeSpringForce(const harness::SpringForceRequest&);
 nlohmann::json encodeForces(const harness::ForcesRequest&);
 nlohmann::json encodeSimulate(const harness::SimulateRequest&);
@@ -22,13 +48,34 @@ nlohmann::json encodeRunParticles(const harness::ParticleRunRequest&);
 nlohmann::json encodeRunBox2D(const harness::Box2DRequest&);
 nlohmann::json encodeRunScene(const harness::SceneRequest&);
 
+/// Request bodies back (the "body" member of an encoded request); throw Malformed.
+harness::SpringForceRequest decodeSpringForceRequest(const nlohmann::json& body);
+harness::ForcesRequest decodeForcesRequest(const nlohmann::json& body);
+harness::SimulateRequest decodeSimulateRequest(const nlohmann::json& body);
+ClothSpec decodeBuildClothRequest(const nlohmann::json& body);
+harness::EmitRequest decodeEmitRequest(const nlohmann::json& body);
+harness::ParticleRunRequest decodeRunParticlesRequest(const nlohmann::json& body);
+harness::Box2DRequest decodeRunBox2DRequest(const nlohmann::json& body);
+harness::SceneRequest decodeRunSceneRequest(const nlohmann::json& body);
+
 /// Answers one encoded request with `code` (the probe calls this with the in-process
-/// implementation); returns the encoded result. Never throws: a malformed request gives a
-/// result whose error says so.
+/// implementation); returns the encoded result. Never throws: a malformed request, an unknown
+/// kind or an exception escaping `code` gives a result whose error says so ({"error": "..."}
+/// alone when there is nothing else to say).
 nlohmann::json serve(harness::StudentCode& code, const nlohmann::json& request);
 
-/// Decoding results: each throws std::runtime_error with a clear message on malformed input
-/// (the ProbeClient turns that into the result's error: "garbage from the probe: ...").
+// Results: an object with "error" (a string, empty when the code ran to the end) and the fields.
+nlohmann::json encodeResult(const harness::SpringForceResult&);
+nlohmann::json encodeResult(const harness::ForcesResult&);
+nlohmann::json encodeResult(const harness::SimulateResult&);
+nlohmann::json encodeResult(const harness::ClothResult&);
+nlohmann::json encodeResult(const harness::ParticlesResult&);
+nlohmann::json encodeResult(const harness::Box2DResult&);
+nlohmann::json encodeResult(const harness::SceneResult&);
+
+/// Decoding results: each throws Malformed (a std::runtime_error) with a clear message on
+/// malformed input (the ProbeClient turns that into the result's error: "garbage from the
+/// probe: ..."). A result whose error is non-empty may carry nothing else.
 harness::SpringForceResult decodeSpringForce(const nlohmann::json&);
 harness::ForcesResult decodeForces(const nlohmann::json&);
 harness::SimulateResult decodeSimulate(const nlohmann::json&);
@@ -37,7 +84,25 @@ harness::ParticlesResult decodeParticles(const nlohmann::json&);
 harness::Box2DResult decodeRunBox2D(const nlohmann::json&);
 harness::SceneResult decodeRunScene(const nlohmann::json&);
 
-/// Framing on a byte stream: a 4-byte little-endian length, then that many bytes of JSON text.
+// Framing -----------------------------------------------------------------------------------------
+/// The largest message either side accepts, bytes (a longer announced length is garbage).
+constexpr std::size_t kMaxFrameBytes = std::size_t{256} << 20;
+
+/// JSON text of `message` (invalid UTF-8 replaced, never throws for that).
+std::string dump(const nlohmann::json& message);
+/// The 4-byte little-endian length, then dump(message). Throws Malformed when the text is
+/// longer than kMaxFrameBytes.
 std::string frame(const nlohmann::json& message);
+/// The length announced by a 4-byte header.
+std::uint32_t frameLength(const unsigned char header[4]);
+/// Parses a message's text; throws Malformed ("not JSON: ...") on bad text.
+nlohmann::json parse(const std::string& text);
+
+/// Blocking helpers for the probe's side of the pipe (the grader uses its own, with deadlines).
+/// readFrame: false at a clean end of stream (no byte of a new frame); throws Malformed on a
+/// truncated frame or a length over kMaxFrameBytes, std::system_error on a read error.
+bool readFrame(int fd, std::string& body);
+/// Writes all of `bytes`; false (errno set) when the other end is gone or on an error.
+bool writeAll(int fd, const std::string& bytes);
 
 }  // namespace a6::wire

@@ -220,7 +220,13 @@ void drawJoints(Painter& paint, const Snapshot& s, const RenderOptions& options)
   const int segments = circleSegments(options.anchorRadiusPx);
   for (const JointData& joint : s.joints) {
     const Rgba color = palette::jointColor(joint.type);
+    // As Box2D's testbed (b2Joint::Draw): a distance or mouse joint is its two anchors; any
+    // other joint also links each body's centre to its anchor, except on the ground's side, so
+    // a pendulum shows its rod from the pivot to the bob and a wheel joint its strut.
+    const bool anchorsOnly = joint.type == "distance" || joint.type == "mouse";
+    if (!anchorsOnly && !joint.groundA) paint.line(joint.centerA, joint.anchorA, width, color);
     paint.line(joint.anchorA, joint.anchorB, width, color);
+    if (!anchorsOnly && !joint.groundB) paint.line(joint.anchorB, joint.centerB, width, color);
     paint.disc(joint.anchorA, dot, segments, color);
     paint.disc(joint.anchorB, dot, segments, color);
   }

@@ -150,6 +150,33 @@ TEST_F(RendererPixels, HiddenSpringTypesAreNotDrawn) {
   EXPECT_COLOR(image, Vec2(-1.0, 1.0), palette::kShear, "visible shear spring");
 }
 
+TEST_F(RendererPixels, JointsLinkTheBodiesCentresLikeBox2DsTestbed) {
+  // testSnapshot()'s revolute joint: box centre (0.5, -0.5) to anchor A (0.5, -0.25), anchor A
+  // to anchor B (0.5, 0.25); its B side is the ground, so nothing beyond anchor B.
+  const Image image = renderer_->render(testSnapshot(), 256, 256);
+  ASSERT_FALSE(image.empty()) << renderer_->error();
+  const Rgba revolute = palette::jointColor("revolute");
+  EXPECT_COLOR(image, Vec2(0.5, -0.4), revolute, "box centre to anchor A");
+  EXPECT_COLOR(image, Vec2(0.5, 0.0), revolute, "anchor A to anchor B");
+  EXPECT_COLOR(image, Vec2(0.5, 0.4), palette::kBackground, "beyond anchor B (the ground)");
+
+  // A pendulum: the pivot on the ground, the rod from the pivot to the bob's centre. A distance
+  // joint is only its two anchors, whatever its bodies' centres.
+  Snapshot s;
+  s.view.height = 4;
+  JointData rod{"revolute", Vec2(-1, 1), Vec2(-1, 1), Vec2(-1.5, 1.5), Vec2(-1, -1), true, false};
+  JointData rope{"distance", Vec2(1, 1), Vec2(1, 0), Vec2(1.5, 1.5), Vec2(1, -1), false, false};
+  s.joints = {rod, rope};
+  const Image pendulum = renderer_->render(s, 256, 256);
+  ASSERT_FALSE(pendulum.empty()) << renderer_->error();
+  auto at = [&](Vec2 p) { return pixelAt(pendulum, s.view, p); };
+  EXPECT_EQ(at(Vec2(-1, 0)), revolute) << "the pendulum's rod";
+  EXPECT_EQ(at(Vec2(-1.25, 1.25)), palette::kBackground) << "towards the ground's centre";
+  EXPECT_EQ(at(Vec2(1, 0.5)), palette::jointColor("distance")) << "the rope";
+  EXPECT_EQ(at(Vec2(1, -0.5)), palette::kBackground) << "a rope has no strut to its body";
+  EXPECT_EQ(at(Vec2(1.25, 1.25)), palette::kBackground) << "a rope has no strut to its body";
+}
+
 TEST_F(RendererPixels, LineThicknessIsInPixelsAtAnySize) {
   // A horizontal structural spring through the centre is springWidthPx rows thick at any size.
   Snapshot s;

@@ -15,7 +15,8 @@ namespace a6::test {
 ///   springs A-B structural, A-D shear, C-D bending, B-D other (rest lengths = lengths);
 ///   floor y < -1.5; circle obstacle at (1.2, -0.8), r 0.3;
 ///   Box2D box of body 0 around (0.5, -0.5), half size 0.25; circle of body 1 at (-0.8, -0.8),
-///   r 0.3, angle 0; a revolute joint from (0.5, -0.25) to (0.5, 0.25).
+///   r 0.3, angle 0; a revolute joint from (0.5, -0.25) to (0.5, 0.25) between the box (centre
+///   (0.5, -0.5), so a line from the centre to anchor A) and the ground (nothing beyond anchor B).
 inline Snapshot testSnapshot() {
   Snapshot s;
   s.scene = "render_test";
@@ -59,7 +60,10 @@ inline Snapshot testSnapshot() {
   wheel.radius = 0.3;
   wheel.angle = 0;
   s.shapes.push_back(wheel);
-  s.joints.push_back(JointData{"revolute", Vec2(0.5, -0.25), Vec2(0.5, 0.25)});
+  JointData joint{"revolute", Vec2(0.5, -0.25), Vec2(0.5, 0.25)};
+  joint.centerA = Vec2(0.5, -0.5);
+  joint.groundB = true;
+  s.joints.push_back(joint);
   return s;
 }
 
@@ -145,25 +149,31 @@ inline Snapshot box2dSnapshot() {
   // Pendulum: pivot (-1.5, 3), bob at angle 0.5 rad.
   const Vec2 pivot(-1.5, 3.0), bob = pivot + 0.9 * Vec2(std::sin(0.5), -std::cos(0.5));
   circle(0, bob, 0.12, 0.5);
-  s.joints.push_back(JointData{"revolute", pivot, pivot});
-  s.joints.push_back(JointData{"distance", pivot, bob});
+  // Joints as toSnapshot fills them: anchors, the bodies' centres, which side is the ground.
+  auto joint = [&](const char* type, Vec2 anchorA, Vec2 anchorB, Vec2 centerA, Vec2 centerB,
+                   bool groundA) {
+    JointData j{type, anchorA, anchorB, centerA, centerB, groundA, false};
+    s.joints.push_back(j);
+  };
+  joint("revolute", pivot, pivot, Vec2(0, 0), bob, true);  // the rod: pivot to the bob
   // A tilted box hanging from a rope.
   box(1, Vec2(-0.4, 2.0), 0.2, 0.12, 0.3);
-  s.joints.push_back(JointData{"distance", Vec2(-0.6, 3.0), Vec2(-0.45, 2.12)});
+  joint("distance", Vec2(-0.6, 3.0), Vec2(-0.45, 2.12), Vec2(0, 0), Vec2(-0.4, 2.0), true);
   // Car: chassis and two wheels with spokes at different angles.
   polygon(2, {Vec2(-0.9, 0.45), Vec2(0.1, 0.45), Vec2(0.15, 0.65), Vec2(-0.2, 0.85),
               Vec2(-0.7, 0.85), Vec2(-0.9, 0.65)});
   circle(3, Vec2(-0.7, 0.2), 0.2, 1.0);
   circle(4, Vec2(-0.05, 0.2), 0.2, 2.5);
-  s.joints.push_back(JointData{"wheel", Vec2(-0.7, 0.45), Vec2(-0.7, 0.2)});
-  s.joints.push_back(JointData{"wheel", Vec2(-0.05, 0.45), Vec2(-0.05, 0.2)});
+  const Vec2 chassis(-0.4, 0.6);
+  joint("wheel", Vec2(-0.7, 0.2), Vec2(-0.7, 0.2), chassis, Vec2(-0.7, 0.2), false);
+  joint("wheel", Vec2(-0.05, 0.2), Vec2(-0.05, 0.2), chassis, Vec2(-0.05, 0.2), false);
   // Piston: a slider on a prismatic joint above a static base.
   box(-1, Vec2(1.2, 0.1), 0.25, 0.1, 0);
   box(5, Vec2(1.2, 0.9), 0.15, 0.3, 0);
-  s.joints.push_back(JointData{"prismatic", Vec2(1.2, 0.2), Vec2(1.2, 0.9)});
+  joint("prismatic", Vec2(1.2, 0.2), Vec2(1.2, 0.9), Vec2(0, 0), Vec2(1.2, 0.9), true);
   // A box dragged by the mouse.
   box(0, Vec2(0.9, 2.4), 0.2, 0.2, -0.4);
-  s.joints.push_back(JointData{"mouse", Vec2(1.0, 2.5), Vec2(1.6, 2.9)});
+  joint("mouse", Vec2(1.6, 2.9), Vec2(1.0, 2.5), Vec2(0, 0), Vec2(0.9, 2.4), true);
   return s;
 }
 

@@ -1,0 +1,411 @@
+// Building a submission's probe. See build.h for the contract.
+//
+// Build notes
+// -----------
+// Compiling is as untrusted as running: `#include "/path/to/solution/spring.cpp"` would copy the
+// solution into the student's object, and an error message would print it. So the compiler and
+// the linker run in the sandbox (grader/sandbox.h) with the kit's secrets hidden (the
+// repository and the build tree) except the kit folder (staged a6/ headers, the precompiled
+// header, starter objects), the probe's link inputs, the work folder and the student's files.
+// Hiding a folder except something inside it is done by hiding its other entries, level by
+// level down to what stays visible, so that nothing has to be mounted back.
+//
+// Each task file is its own translation unit, compiled alone: a file that is missing, does not
+// compile or runs out of time is replaced by the starter's prebuilt object, so only its task
+// loses points. The link can still fail because of one file (it defines main(), or a symbol the
+// framework defines, or lacks a function the framework calls because it was renamed): then the
+// objects the linker complains about are replaced, one at a time, by the starter's, until the
+// probe links; the starter alone always links.
+#include "build.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <fstream>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <system_error>
+#include <thread>
+
+namespace a6::grader {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+fs::path absoluteClean(const fs::path& p) {
+  std::error_code ec;
+  fs::path c = fs::weakly_canonical(fs::absolute(p, ec), ec);
+  return (ec ? fs::absolute(p) : c).lexically_normal();
+}
+
+bool isWithin(const fs::path& inner, const fs::path& outer) {
+  auto o = outer.begin(), i = inner.begin();
+  for (; o != outer.end(); ++o, ++i) {
+    if (o->empty()) continue;  // a trailing separator
+    if (i == inner.end() || *i != *o) return false;
+  }
+  return true;
+}
+
+// Adds to `out` what to hide so that `secret` cannot be read except the `keep` paths within
+// it: the secret itself when nothing in it is kept, otherwise its other entries, level by level
+// down to what is kept. (The kept paths' ancestors stay visible, their other entries covered.)
+void hideExcept(const fs::path& secret, const std::vector<fs::path>& keep,
+                std::vector<fs::path>& out, int depth = 0) {
+  std::vector<fs::path> inside;
+  for (const fs::path& k : keep) {
+    if (isWithin(secret, k)) return;  // the secret lies inside something kept visible
+    if (isWithin(k, secret)) inside.push_back(k);
+  }
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(secret, ec);
+  // A link is not covered itself (that would cover its target): what it points to is either a
+  // secret of its own or harmless.
+  if (ec || !fs::exists(st) || fs::is_symlink(st)) return;
+  if (inside.empty() || !fs::is_directory(st) || depth > 64) {
+    out.push_back(secret);
+    return;
+  }
+  for (fs::directory_iterator it(secret, ec), end; !ec && it != end; it.increment(ec)) {
+    hideExcept(it->path(), inside, out, depth + 1);
+  }
+}
+
+// ---- reading what the compiler and the linker said ----
+
+std::string replaceAll(std::string s, const std::string& from, const std::string& to) {
+  if (from.empty()) return s;
+  for (std::size_t pos = 0; (pos = s.find(from, pos)) != std::string::npos; pos += to.size()) {
+    s.replace(pos, from.size(), to);
+  }
+  return s;
+}
+
+std::string cap(const std::string& s, std::size_t bytes) {
+  if (s.size() <= bytes) return s;
+  return s.substr(0, bytes) + "\n[... " + std::to_string(s.size() - bytes) + " more bytes cut]\n";
+}
+
+std::set<std::string> readSymbols(const fs::path& file) {
+  std::set<std::string> symbols;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty()) symbols.insert(line);
+  }
+  return symbols;
+}
+
+std::vector<std::string> undefinedSymbols(const std::string& linkerOutput) {
+  static const std::regex re("undefined reference to [`']([^'\n]*)'");
+  std::vector<std::string> out;
+  for (std::sregex_iterator it(linkerOutput.begin(), linkerOutput.end(), re), end; it != end;
+       ++it) {
+    out.push_back((*it)[1]);
+  }
+  return out;
+}
+
+std::string stem(const std::string& file) { return fs::path(file).stem().string(); }
+
+}  // namespace
+
+fs::path defaultKitPath() {
+#ifdef A6_DEFAULT_KIT_JSON
+  return A6_DEFAULT_KIT_JSON;
+#else
+  return "grader/kit.json";
+#endif
+}
+
+Limits defaultCompileLimits() {
+  Limits l;
+  l.wallSeconds = 60;
+  l.cpuSeconds = 60;
+  l.memoryBytes = std::size_t{512} << 20;  // a compile needs about 200 MiB of address space
+  l.fileSizeBytes = std::size_t{64} << 20;
+  l.processes = 8;
+  l.outputBytes = std::size_t{64} << 10;
+  return l;
+}
+
+Kit loadKit(const fs::path& kitJson) {
+  Kit kit;
+  const std::string rebuild = " (rebuild the grader: cmake --build BUILD --target a6_grader_kit)";
+  std::ifstream in(kitJson);
+  if (!in) {
+    kit.error = "cannot read the grader kit " + kitJson.string() + rebuild;
+    return kit;
+  }
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    kit.compiler = j.at("compiler").get<std::string>();
+    kit.compileFlags = j.at("compileFlags").get<std::vector<std::string>>();
+    kit.probeMain = j.at("probeMain").get<std::vector<std::string>>();
+    kit.linkInputs = j.at("linkInputs").get<std::vector<std::string>>();
+    kit.starterObjects = j.at("starterObjects").get<std::string>();
+    kit.dir = j.at("dir").get<std::string>();
+    for (const std::string& s : j.value("secrets", std::vector<std::string>{})) {
+      kit.secrets.emplace_back(s);
+    }
+  } catch (const std::exception& e) {
+    kit.error = "the grader kit " + kitJson.string() + " is malformed: " + e.what() + rebuild;
+    return kit;
+  }
+  std::error_code ec;
+  if (::access(kit.compiler.c_str(), X_OK) != 0) {
+    kit.error = "the kit's compiler " + kit.compiler + " is not an executable" + rebuild;
+    return kit;
+  }
+  if (kit.probeMain.empty()) {
+    kit.error = "the grader kit " + kitJson.string() +
+                " names no probe main (the probe targets a6_probe_main and a6_probe_kit were not "
+                "part of the build)" +
+                rebuild;
+    return kit;
+  }
+  std::vector<fs::path> needed;
+  for (const std::string& file : kTaskFiles) {
+    needed.push_back(kit.starterObjects / (stem(file) + ".o"));
+  }
+  for (const std::string& input : kit.probeMain) needed.emplace_back(input);
+  for (const std::string& input : kit.linkInputs) {
+    if (!input.empty() && input[0] == '/') needed.emplace_back(input);
+  }
+  for (const fs::path& file : needed) {
+    if (!fs::is_regular_file(file, ec)) {
+      kit.error = "the grader kit lacks " + file.string() + rebuild;
+      return kit;
+    }
+  }
+  return kit;
+}
+
+namespace {
+Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& workDirIn,
+                          const Limits& compileLimits, int jobs) {
+  Build build;
+  const auto start = Clock::now();
+  if (!kit.ok()) {
+    build.error = "no grader kit: " + kit.error;
+    return build;
+  }
+  std::error_code ec;
+  const fs::path workDir = absoluteClean(workDirIn);
+  fs::create_directories(workDir / "obj", ec);
+  if (ec) {
+    build.error = "cannot create the work folder " + workDir.string() + ": " + ec.message();
+    return build;
+  }
+  // The sandbox runs the compiler as another user (nobody): it must reach the work folder.
+  const auto open = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                    fs::perms::others_read | fs::perms::others_exec;
+  fs::permissions(workDir, open, ec);
+  fs::permissions(workDir / "obj", open, ec);
+
+  // Hidden: the kit's secrets, except the kit, the probe's link inputs, the work folder and the
+  // student's files.
+  std::vector<fs::path> keep = {absoluteClean(kit.dir), workDir};
+  for (const auto& [name, path] : intake.files) keep.push_back(absoluteClean(path).parent_path());
+  for (const auto* inputs : {&kit.probeMain, &kit.linkInputs}) {
+    for (const std::string& input : *inputs) {
+      if (!input.empty() && input[0] == '/') keep.push_back(absoluteClean(input));
+    }
+  }
+  std::vector<fs::path> hide;
+  for (const fs::path& secret : kit.secrets) hideExcept(absoluteClean(secret), keep, hide);
+  std::sort(hide.begin(), hide.end());
+  hide.erase(std::unique(hide.begin(), hide.end()), hide.end());
+
+  std::mutex notesMutex;
+  auto run = [&](const fs::path& dir, std::vector<std::string> argv) {
+    SandboxSpec s;
+    s.argv = std::move(argv);
+    s.workDir = dir;
+    s.removeWorkDir = false;  // it holds the object file, the probe
+    s.limits = compileLimits;
+    s.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "TMPDIR=" + dir.string()};
+    s.hide = hide;
+    Exit e = runSandboxed(s);
+    std::lock_guard<std::mutex> lock(notesMutex);
+    for (const std::string& n : e.notes) {
+      if (std::find(build.notes.begin(), build.notes.end(), n) == build.notes.end()) {
+        build.notes.push_back(n);
+      }
+    }
+    return e;
+  };
+  const std::string kitDir = absoluteClean(kit.dir).string() + "/";
+
+  // 1. Each file alone (`jobs` at a time).
+  build.tasks.resize(kTaskFiles.size());
+  std::vector<fs::path> objects(kTaskFiles.size());  // the object linked for each task
+  auto compile = [&](std::size_t i) {
+    const std::string& file = kTaskFiles[i];
+    TaskBuild& task = build.tasks[i];
+    task.file = file;
+    const fs::path starter = kit.starterObjects / (stem(file) + ".o");
+    objects[i] = starter;
+    std::error_code fec;
+    auto found = intake.files.find(file);
+    if (found == intake.files.end() || !fs::is_regular_file(found->second, fec)) {
+      task.status = TaskBuild::Status::Missing;
+      task.messages = file + " is not in the submission: task " + std::to_string(i + 1) +
+                      " is graded with the starter's stub.\n";
+      return;
+    }
+    const fs::path source = absoluteClean(found->second);
+    const fs::path dir = workDir / "obj" / stem(file);
+    std::vector<std::string> argv = {kit.compiler};
+    argv.insert(argv.end(), kit.compileFlags.begin(), kit.compileFlags.end());
+    argv.insert(argv.end(), {"-c", source.string(), "-o", stem(file) + ".o"});
+    const auto t0 = Clock::now();
+    const Exit e = run(dir, argv);
+    task.seconds = secondsSince(t0);
+    // Messages name the file as the student knows it, and the headers as a6/... .
+    std::string said = replaceAll(e.output, source.parent_path().string() + "/", "");
+    said = replaceAll(said, kitDir + "include/", "");
+    task.messages = cap(said, 32u << 10);
+    if (e.outputTruncated) task.messages += "[... the compiler's output was cut]\n";
+    const fs::path object = dir / (stem(file) + ".o");
+    if (e.kind == Exit::Kind::TimedOut) {
+      task.status = TaskBuild::Status::TimedOut;
+      task.messages += "The compiler did not finish " + file + " within " +
+                       std::to_string(static_cast<int>(compileLimits.wallSeconds)) + " s: task " +
+                       std::to_string(i + 1) + " is graded with the starter's stub.\n";
+    } else if (e.ok() && fs::is_regular_file(object, fec)) {
+      task.status = TaskBuild::Status::Compiled;
+      objects[i] = object;
+    } else {
+      task.status = TaskBuild::Status::CompileError;
+      if (said.find("virtual memory exhausted") != std::string::npos ||
+          said.find("out of memory") != std::string::npos) {
+        task.messages += "The compiler ran out of its " +
+                         std::to_string(compileLimits.memoryBytes >> 20) + " MiB of memory.\n";
+      }
+      task.messages += file + " did not compile (the compiler " + e.describe() + "): task " +
+                       std::to_string(i + 1) + " is graded with the starter's stub.\n";
+    }
+  };
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i; (i = next++) < kTaskFiles.size();) compile(i);
+  };
+  std::vector<std::thread> workers;
+  try {
+    for (int k = 1; k < std::max(1, jobs); ++k) workers.emplace_back(worker);
+  } catch (const std::system_error&) {
+    // No more threads: the ones started and this one do the rest.
+  }
+  worker();
+  for (std::thread& t : workers) t.join();
+
+  // 2. The link; a student object that keeps it from linking is replaced by the starter's.
+  const fs::path linkDir = workDir / "link";
+  const auto linkStart = Clock::now();
+  for (;;) {
+    // As grader/cmake/probe.cmake links: main, the six objects in task order, the libraries.
+    std::vector<std::string> argv = {kit.compiler, "-o", "a6_probe"};
+    argv.insert(argv.end(), kit.probeMain.begin(), kit.probeMain.end());
+    for (const fs::path& o : objects) argv.push_back(o.string());
+    argv.insert(argv.end(), kit.linkInputs.begin(), kit.linkInputs.end());
+    const Exit e = run(linkDir, argv);
+    if (e.ok() && fs::is_regular_file(linkDir / "a6_probe", ec)) {
+      build.probe = workDir / "a6_probe";
+      fs::rename(linkDir / "a6_probe", build.probe, ec);
+      if (ec) {
+        build.error =
+            "cannot move the linked probe to " + build.probe.string() + ": " + ec.message();
+      }
+      break;
+    }
+    // Who is to blame: the student objects the linker names (in the order it names them), then
+    // those whose starter defines a symbol the linker found undefined.
+    std::vector<std::pair<std::size_t, std::size_t>> blamed;  // (position in output, task)
+    const auto undefined = undefinedSymbols(e.output);
+    for (std::size_t i = 0; i < build.tasks.size(); ++i) {
+      if (build.tasks[i].status != TaskBuild::Status::Compiled) continue;
+      const std::size_t pos = e.output.find(objects[i].string());
+      if (pos != std::string::npos) {
+        blamed.emplace_back(pos, i);
+        continue;
+      }
+      const auto defined = readSymbols(kit.starterObjects / (stem(kTaskFiles[i]) + ".syms"));
+      for (const std::string& symbol : undefined) {
+        if (defined.count(symbol)) {
+          blamed.emplace_back(e.output.size(), i);
+          break;
+        }
+      }
+    }
+    std::sort(blamed.begin(), blamed.end());
+    bool lastResort = false;
+    if (blamed.empty()) {
+      for (std::size_t i = 0; i < build.tasks.size(); ++i) {
+        if (build.tasks[i].status == TaskBuild::Status::Compiled) blamed.emplace_back(0, i);
+      }
+      lastResort = true;
+    }
+    if (blamed.empty()) {
+      build.error = "the probe does not link even with the starter's objects (the linker " +
+                    e.describe() +
+                    "): the grader kit is broken, rebuild it (cmake --build BUILD --target "
+                    "a6_grader_kit). The linker said:\n" +
+                    cap(e.output, 16u << 10);
+      break;
+    }
+    // One at a time: the first one blamed (as a last resort, every student object).
+    std::string said = replaceAll(e.output, workDir.string() + "/obj/", "");
+    said = replaceAll(said, kitDir, "kit/");
+    for (const auto* inputs : {&kit.probeMain, &kit.linkInputs}) {
+      for (const std::string& input : *inputs) {
+        if (!input.empty() && input[0] == '/') {
+          said = replaceAll(said, input, fs::path(input).filename().string());
+        }
+      }
+    }
+    for (const fs::path& secret : kit.secrets) {
+      said = replaceAll(said, absoluteClean(secret).string() + "/", "");
+    }
+    said = cap(said, 8u << 10);
+    for (std::size_t k = 0; k < (lastResort ? blamed.size() : 1); ++k) {
+      const std::size_t i = blamed[k].second;
+      TaskBuild& task = build.tasks[i];
+      task.status = TaskBuild::Status::LinkError;
+      task.messages += task.file + " compiled, but the probe " +
+                       (lastResort ? std::string("did not link with the submission's objects")
+                                   : "did not link with its object") +
+                       " (does it define main(), or a function the framework defines, or "
+                       "did it rename a function the framework calls?): task " +
+                       std::to_string(i + 1) +
+                       " is graded with the starter's stub. The linker said:\n" + said;
+      objects[i] = kit.starterObjects / (stem(task.file) + ".o");
+    }
+  }
+  build.linkSeconds = secondsSince(linkStart);
+  build.seconds = secondsSince(start);
+  return build;
+}
+}  // namespace
+
+Build buildProbe(const Kit& kit, const Intake& intake, const fs::path& workDir,
+                 const Limits& compileLimits, int jobs) {
+  try {
+    return buildProbeUnguarded(kit, intake, workDir, compileLimits, jobs);
+  } catch (const std::exception& e) {
+    Build build;
+    build.error = std::string("building the probe failed: ") + e.what();
+    return build;
+  }
+}
+
+}  // namespace a6::grader

@@ -1,0 +1,61 @@
+# The probe and how the grader talks to it (helper "probe"): the wire format, the probe's main,
+# the kit a submission's probe links against, the sandbox and the probe client.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(SECCOMP REQUIRED IMPORTED_TARGET GLOBAL libseccomp)
+find_package(Threads REQUIRED)
+
+# The harness's plain data as JSON: both ends of the pipe.
+add_library(a6_wire STATIC ${PROJECT_SOURCE_DIR}/framework/harness/wire.cpp)
+target_link_libraries(a6_wire PUBLIC a6_harness_api nlohmann_json::nlohmann_json)
+target_compile_options(a6_wire PRIVATE ${A6_WARNINGS})
+
+# The probe's main, with the reference force models compiled in (anonymous namespace: student
+# code cannot link against them).
+add_library(a6_probe_main OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_main.cpp)
+target_include_directories(a6_probe_main PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+target_link_libraries(a6_probe_main PRIVATE a6_harness_api nlohmann_json::nlohmann_json
+                                            PkgConfig::SECCOMP)
+target_compile_options(a6_probe_main PRIVATE ${A6_WARNINGS})
+
+# The kit: everything a probe links besides its main and the six student objects.
+add_library(a6_probe_kit STATIC $<TARGET_OBJECTS:a6_framework> $<TARGET_OBJECTS:a6_core>
+                                $<TARGET_OBJECTS:a6_wire>)
+set_target_properties(a6_probe_kit PROPERTIES LINKER_LANGUAGE CXX)
+target_link_libraries(a6_probe_kit INTERFACE a6_harness_api box2d::box2d PkgConfig::SECCOMP)
+
+# How a submission's probe is linked (what grader/build.cpp runs, in the sandbox):
+#   <compiler> -o <probe> <A6_PROBE_LINK_MAIN> <the six task objects> <A6_PROBE_LINK_LIBRARIES>
+# For intake_build.cmake (included after this file) and for the tests' hostile probes.
+set(A6_PROBE_LINK_COMPILER ${CMAKE_CXX_COMPILER})
+set(A6_PROBE_LINK_MAIN "$<TARGET_OBJECTS:a6_probe_main>")
+set(A6_PROBE_LINK_LIBRARIES
+    "$<TARGET_FILE:a6_probe_kit>" "$<TARGET_LINKER_FILE:box2d::box2d>" ${SECCOMP_LINK_LIBRARIES})
+set(A6_PROBE_LINK_TARGETS a6_probe_main a6_probe_kit)  # build these before linking a probe
+set(A6_PROBE_EXTRA_LINK ${SECCOMP_LINK_LIBRARIES})  # what kit.json adds after box2d
+list(JOIN A6_PROBE_LINK_LIBRARIES " " _a6_probe_libs)
+file(GENERATE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/probe_link.txt CONTENT
+"# How a submission's probe is linked (grader/cmake/probe.cmake): the compiler, then -o and the
+# probe's path, then the probe main object, then the six task objects in task order (spring,
+# forces, time_stepping, cloth, particle_system, joints), then the libraries, in this order.
+compiler=${CMAKE_CXX_COMPILER}
+main=${A6_PROBE_LINK_MAIN}
+libraries=${_a6_probe_libs}
+line=${CMAKE_CXX_COMPILER} -o PROBE ${A6_PROBE_LINK_MAIN} SPRING.o FORCES.o TIME_STEPPING.o CLOTH.o PARTICLE_SYSTEM.o JOINTS.o ${_a6_probe_libs}
+")
+unset(_a6_probe_libs)
+
+# Probes of the solution and of the starter, for the tests (linked as a submission's is).
+foreach(set solution starter)
+  add_executable(a6_probe_${set})
+  target_link_libraries(a6_probe_${set} PRIVATE a6_probe_main ${A6_${set}_OBJECTS} a6_probe_kit)
+endforeach()
+
+# The sandbox, and the StudentCode that talks to a sandboxed probe.
+add_library(a6_sandbox STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox.cpp)
+target_include_directories(a6_sandbox PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(a6_sandbox PUBLIC PkgConfig::SECCOMP Threads::Threads)
+target_compile_options(a6_sandbox PRIVATE ${A6_WARNINGS})
+
+add_library(a6_probe_client STATIC ${CMAKE_CURRENT_SOURCE_DIR}/probe_client.cpp)
+target_link_libraries(a6_probe_client PUBLIC a6_sandbox a6_wire a6_harness_api)
+target_compile_options(a6_probe_client PRIVATE ${A6_WARNINGS})

@@ -1,0 +1,737 @@
+// Taking a submission in. See intake.h for the contract.
+//
+// Intake notes
+// ------------
+// A submission is untrusted data. We never extract anything: the archive (or the folder) is
+// read entry by entry, only entries whose file name is one of the six task files are read, into
+// memory, with a size cap, and at the end the chosen copies are written under `dest` with names
+// we choose (the six known names). Nothing a submission names can make us write elsewhere, so
+// '..', absolute paths, links and devices are only reported, never acted on.
+//
+// Several copies of a task file: the shallowest wins (Gradescope puts the files at the root of
+// the submission, students often zip the folder that holds them); ties go to the path that
+// sorts first, so the result never depends on archive or directory order. A copy that is
+// refused (too large, binary) does not count: the next one is taken, with a note.
+//
+// Zip bombs: an entry's data is read only for task files (at most maxFileBytes each) and an
+// archive stops being read after maxEntries entries or maxTotalBytes of decompressed data.
+#include "intake.h"
+
+#include <archive.h>
+#include <archive_entry.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <system_error>
+
+namespace a6::grader {
+namespace {
+
+namespace fs = std::filesystem;
+
+// At most this many notes about skipped entries; the rest are counted in one last note.
+constexpr std::size_t kMaxEntryNotes = 40;
+
+std::string humanBytes(std::uintmax_t bytes) {
+  char buf[64];
+  if (bytes >= (1u << 20)) {
+    std::snprintf(buf, sizeof buf, "%.1f MiB", static_cast<double>(bytes) / (1u << 20));
+  } else if (bytes >= (1u << 10)) {
+    std::snprintf(buf, sizeof buf, "%.1f KiB", static_cast<double>(bytes) / (1u << 10));
+  } else {
+    std::snprintf(buf, sizeof buf, "%ju bytes", bytes);
+  }
+  return buf;
+}
+
+// A path as it appears in a note: quoted, control characters escaped, long ones shortened.
+std::string shownPath(const std::string& path) {
+  std::string out = "'";
+  for (unsigned char c : path) {
+    if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (out.size() > 200) out = out.substr(0, 100) + "..." + out.substr(out.size() - 90);
+  return out + "'";
+}
+
+bool isTaskFile(const std::string& name) {
+  return std::find(kTaskFiles.begin(), kTaskFiles.end(), name) != kTaskFiles.end();
+}
+
+// The task file `name` matches when case is ignored (a near miss worth a note), or "".
+std::string nearMissOf(const std::string& name) {
+  auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  const std::string l = lower(name);
+  for (const std::string& task : kTaskFiles) {
+    if (l == task || l == task + ".txt") return task;
+  }
+  return "";
+}
+
+bool isNestedArchive(const std::string& name) {
+  static const char* const kExtensions[] = {".zip",    ".tar", ".tgz", ".tar.gz", ".tar.bz2",
+                                            ".tar.xz", ".gz",  ".7z",  ".rar"};
+  std::string l = name;
+  for (char& c : l) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* ext : kExtensions) {
+    const std::size_t n = std::strlen(ext);
+    if (l.size() > n && l.compare(l.size() - n, n, ext) == 0) return true;
+  }
+  return false;
+}
+
+bool validUtf8(const std::string& s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    int extra = 0;
+    if (c < 0x80) {
+      ++i;
+      continue;
+    } else if ((c & 0xE0) == 0xC0 && c >= 0xC2) {
+      extra = 1;
+    } else if ((c & 0xF0) == 0xE0) {
+      extra = 2;
+    } else if ((c & 0xF8) == 0xF0 && c <= 0xF4) {
+      extra = 3;
+    } else {
+      return false;
+    }
+    if (i + extra >= s.size()) return false;
+    for (int k = 1; k <= extra; ++k) {
+      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
+    }
+    i += extra + 1;
+  }
+  return true;
+}
+
+// A path inside a submission, split into its components. Both '/' and '\' separate (zips made on
+// Windows sometimes use '\'); empty and '.' components are dropped.
+struct EntryPath {
+  std::vector<std::string> parts;
+  bool absolute = false;
+  bool parent = false;  // has a '..' component
+  std::string name() const { return parts.empty() ? std::string() : parts.back(); }
+};
+
+EntryPath splitPath(const std::string& raw) {
+  EntryPath p;
+  if (!raw.empty() && (raw[0] == '/' || raw[0] == '\\')) p.absolute = true;
+  // "C:..." (a Windows drive) counts as absolute too.
+  if (raw.size() >= 2 && raw[1] == ':' && std::isalpha(static_cast<unsigned char>(raw[0]))) {
+    p.absolute = true;
+  }
+  std::string part;
+  auto flush = [&] {
+    if (part == "..") p.parent = true;
+    if (!part.empty() && part != ".") p.parts.push_back(part);
+    part.clear();
+  };
+  for (char c : raw) {
+    if (c == '/' || c == '\\') {
+      flush();
+    } else {
+      part += c;
+    }
+  }
+  flush();
+  return p;
+}
+
+std::string joinPath(const std::vector<std::string>& parts) {
+  std::string s;
+  for (const std::string& part : parts) s += (s.empty() ? "" : "/") + part;
+  return s;
+}
+
+// One copy of a task file found in the submission.
+struct Copy {
+  std::string path;   // as found, '/'-separated, relative to the submission
+  std::size_t depth;  // number of components
+  std::string data;   // its bytes (only for the copy currently chosen)
+};
+
+bool better(const Copy& a, const Copy& b) {
+  return a.depth != b.depth ? a.depth < b.depth : a.path < b.path;
+}
+
+// What an intake collects while it reads: the chosen copy of each task file, every copy's path
+// (for the duplicate note) and the notes.
+class Collector {
+ public:
+  explicit Collector(const IntakeLimits& limits) : limits_(limits) {}
+
+  void note(std::string text) { notes_.push_back(std::move(text)); }
+  // A note about one skipped entry; counted but not listed past kMaxEntryNotes.
+  void entryNote(std::string text) {
+    if (entryNotes_++ < kMaxEntryNotes) notes_.push_back(std::move(text));
+  }
+
+  // Whether a copy of `name` at `path` (depth `depth`) could still win, i.e. is worth reading.
+  // The same path twice (a tarball appended to with tar -r) counts as one copy: the later one,
+  // as extracting it would leave.
+  bool wanted(const std::string& name, const std::string& path, std::size_t depth) const {
+    auto it = chosen_.find(name);
+    return it == chosen_.end() || path == it->second.path ||
+           better(Copy{path, depth, {}}, it->second);
+  }
+
+  // Offers a copy that was read in full; checks its content (a refused copy is noted).
+  void offer(const std::string& name, const std::string& path, std::size_t depth,
+             std::string data) {
+    if (data.find('\0') != std::string::npos) {
+      entryNote(shownPath(path) +
+                ": refused: it contains NUL bytes, so it is binary, not C++ "
+                "source; submit the .cpp text file");
+      return;
+    }
+    if (wanted(name, path, depth)) chosen_[name] = Copy{path, depth, std::move(data)};
+  }
+
+  // Records that a (usable or not) copy of `name` exists at `path`, for the duplicates note.
+  void seen(const std::string& name, const std::string& path) { seen_[name].push_back(path); }
+
+  // Writes the chosen copies into dest and returns the result.
+  Intake finish(const fs::path& dest, const std::string& what, bool anyEntries,
+                bool sawNestedArchive) {
+    Intake out;
+    std::error_code ec;
+    fs::create_directories(dest, ec);
+    if (ec) {
+      out.error = "cannot create the folder " + dest.string() +
+                  " for the submission's files: " + ec.message() +
+                  " (check that the output folder is writable)";
+      return out;
+    }
+    fs::permissions(dest,
+                    fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                        fs::perms::others_read | fs::perms::others_exec,
+                    ec);
+    for (const std::string& name : kTaskFiles) {
+      // A stale copy from an earlier run must never be mistaken for this submission's file.
+      fs::remove(dest / name, ec);
+      auto it = chosen_.find(name);
+      if (it == chosen_.end()) continue;
+      const Copy& copy = it->second;
+      const fs::path target = dest / name;
+      {
+        std::ofstream file(target, std::ios::binary | std::ios::trunc);
+        file.write(copy.data.data(), static_cast<std::streamsize>(copy.data.size()));
+        if (!file) {
+          out.error = "cannot write " + target.string() + ": " + std::strerror(errno) +
+                      " (check the output folder: disk full or not writable?)";
+          return out;
+        }
+      }
+      fs::permissions(target,
+                      fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                          fs::perms::others_read,
+                      ec);
+      out.files[name] = target;
+      if (!validUtf8(copy.data)) {
+        note(shownPath(copy.path) +
+             ": not valid UTF-8 text (taken anyway; if the compiler "
+             "rejects a character, save the file as UTF-8)");
+      }
+      auto& paths = seen_[name];
+      std::sort(paths.begin(), paths.end());
+      paths.erase(std::unique(paths.begin(), paths.end()), paths.end());
+      if (paths.size() > 1) {
+        std::string others;
+        for (const std::string& p : paths) {
+          if (p != copy.path) others += (others.empty() ? "" : ", ") + shownPath(p);
+        }
+        note(name + ": " + std::to_string(paths.size()) + " copies found; took " +
+             shownPath(copy.path) + " (the shallowest copy wins), ignored " + others);
+      }
+    }
+    if (entryNotes_ > kMaxEntryNotes) {
+      note(std::to_string(entryNotes_ - kMaxEntryNotes) + " more skipped entries are not listed");
+    }
+    if (!anyEntries) {
+      note("the " + what +
+           " is empty: no task file was found, every task uses the starter's "
+           "stub");
+    } else if (out.files.empty()) {
+      std::string names;
+      for (const std::string& n : kTaskFiles) names += (names.empty() ? "" : ", ") + n;
+      note("no task file was found in the " + what + " (looked for " + names +
+           " at any depth); every task uses the starter's stub" +
+           (sawNestedArchive ? ". Archives inside the submission are not opened: submit the "
+                               ".cpp files themselves"
+                             : ""));
+    }
+    out.notes = std::move(notes_);
+    return out;
+  }
+
+  const IntakeLimits& limits() const { return limits_; }
+  bool anyChosen() const { return !chosen_.empty(); }
+
+ private:
+  const IntakeLimits& limits_;
+  std::map<std::string, Copy> chosen_;
+  std::map<std::string, std::vector<std::string>> seen_;
+  std::vector<std::string> notes_;
+  std::size_t entryNotes_ = 0;
+};
+
+// The checks every entry goes through, archive or folder. Returns true when the entry is a task
+// file worth reading (a regular file, safe path, not too deep, named like a task file).
+enum class Kind { Regular, Directory, Symlink, Hardlink, Device, Fifo, Socket, Other };
+
+const char* describe(Kind kind) {
+  switch (kind) {
+    case Kind::Symlink:
+      return "a symbolic link";
+    case Kind::Hardlink:
+      return "a hard link";
+    case Kind::Device:
+      return "a device file";
+    case Kind::Fifo:
+      return "a named pipe (FIFO)";
+    case Kind::Socket:
+      return "a socket";
+    default:
+      return "not a regular file";
+  }
+}
+
+// Decides what to do with one entry; notes refusals. Returns the task file name to read, or "".
+std::string screen(Collector& c, const std::string& raw, const EntryPath& p, Kind kind,
+                   const std::string& linkTarget, bool& sawNestedArchive) {
+  const std::string& shown = raw;
+  if (p.absolute) {
+    c.entryNote(shownPath(shown) +
+                ": refused: an absolute path (nothing is ever written "
+                "outside the grader's folder)");
+    return "";
+  }
+  if (p.parent) {
+    c.entryNote(shownPath(shown) +
+                ": refused: the path contains '..' (nothing is ever written "
+                "outside the grader's folder)");
+    return "";
+  }
+  if (p.parts.empty()) return "";
+  if (p.parts.front() == "__MACOSX") return "";  // macOS resource forks ("._spring.cpp")
+  const std::string name = p.name();
+  if (kind == Kind::Directory) return "";
+  if (static_cast<int>(p.parts.size()) > c.limits().maxDepth) {
+    c.entryNote(shownPath(shown) + ": skipped: " + std::to_string(p.parts.size()) +
+                " levels deep, over the limit of " + std::to_string(c.limits().maxDepth));
+    return "";
+  }
+  if (kind != Kind::Regular) {
+    std::string why = std::string(describe(kind));
+    if (!linkTarget.empty()) why += " to " + shownPath(linkTarget);
+    c.entryNote(shownPath(shown) + ": refused: " + why +
+                "; links and special files are never followed" +
+                (isTaskFile(name) ? ": submit the file itself" : ""));
+    if (isTaskFile(name)) c.seen(name, joinPath(p.parts));
+    return "";
+  }
+  if (isTaskFile(name)) return name;
+  if (isNestedArchive(name)) {
+    sawNestedArchive = true;
+    c.entryNote(shownPath(shown) +
+                ": a nested archive, not opened (submit the .cpp files "
+                "themselves, not an archive inside the archive)");
+    return "";
+  }
+  const std::string near = nearMissOf(name);
+  if (!near.empty()) {
+    c.entryNote(shownPath(shown) + ": ignored: the name must be exactly '" + near +
+                "' (names are case-sensitive)");
+  }
+  return "";
+}
+
+std::string tooLarge(const std::string& path, std::uintmax_t size, const IntakeLimits& limits,
+                     bool atLeast) {
+  return shownPath(path) + ": refused: " + (atLeast ? "more than " : "") + humanBytes(size) +
+         ", over the " + humanBytes(limits.maxFileBytes) + " limit for a task file";
+}
+
+// ---- archives (libarchive) ----
+
+struct ArchiveDeleter {
+  void operator()(archive* a) const { archive_read_free(a); }
+};
+
+std::string archiveError(archive* a) {
+  const char* s = archive_error_string(a);
+  return s ? s : "unknown error";
+}
+
+Kind kindOf(archive_entry* e) {
+  if (archive_entry_hardlink(e) != nullptr) return Kind::Hardlink;
+  if (archive_entry_symlink(e) != nullptr) return Kind::Symlink;
+  switch (archive_entry_filetype(e)) {
+    case AE_IFREG:
+      return Kind::Regular;
+    case AE_IFDIR:
+      return Kind::Directory;
+    case AE_IFLNK:
+      return Kind::Symlink;
+    case AE_IFCHR:
+    case AE_IFBLK:
+      return Kind::Device;
+    case AE_IFIFO:
+      return Kind::Fifo;
+    case AE_IFSOCK:
+      return Kind::Socket;
+    default:
+      return Kind::Other;
+  }
+}
+
+// Opens `path` as an archive, or returns libarchive's complaint.
+std::unique_ptr<archive, ArchiveDeleter> openArchive(const fs::path& path, std::string& error) {
+  std::unique_ptr<archive, ArchiveDeleter> a(archive_read_new());
+  archive_read_support_format_zip(a.get());
+  archive_read_support_format_tar(a.get());
+  archive_read_support_format_empty(a.get());
+  archive_read_support_filter_gzip(a.get());
+  archive_read_support_filter_bzip2(a.get());
+  archive_read_support_filter_xz(a.get());
+  if (archive_read_open_filename(a.get(), path.c_str(), 64 << 10) != ARCHIVE_OK) {
+    error = archiveError(a.get());
+    return nullptr;
+  }
+  return a;
+}
+
+Intake readArchive(const fs::path& submission, const fs::path& dest, const IntakeLimits& limits) {
+  std::string openError;
+  auto a = openArchive(submission, openError);
+  if (!a) {
+    // A single task file submitted on its own (not an archive): take it as it is.
+    const std::string name = submission.filename().string();
+    if (isTaskFile(name)) {
+      Collector c(limits);
+      std::ifstream in(submission, std::ios::binary);
+      std::string data(limits.maxFileBytes + 1, '\0');
+      in.read(data.data(), static_cast<std::streamsize>(data.size()));
+      data.resize(static_cast<std::size_t>(in.gcount()));
+      c.seen(name, name);
+      if (data.size() > limits.maxFileBytes) {
+        c.note(tooLarge(name, limits.maxFileBytes, limits, true));
+      } else {
+        c.offer(name, name, 1, std::move(data));
+      }
+      return c.finish(dest, "submission", true, false);
+    }
+    Intake out;
+    out.error = "cannot read the submission " + submission.string() +
+                ": it is neither a folder nor a zip or tar archive (" + openError +
+                "); submit a folder, a .zip, a .tar or a .tar.gz with the six .cpp files";
+    return out;
+  }
+
+  Collector c(limits);
+  bool anyEntries = false, sawNested = false;
+  std::string damage;  // why reading stopped early, when the archive is damaged
+  std::size_t entries = 0, readBytes = 0;
+  std::string lastPath;
+  // Bytes the archive has made us decompress so far (zip skips entries by seeking).
+  auto consumed = [&](bool zip) {
+    return zip ? readBytes : static_cast<std::size_t>(archive_filter_bytes(a.get(), 0));
+  };
+  for (;;) {
+    archive_entry* e = nullptr;
+    const int r = archive_read_next_header(a.get(), &e);
+    if (r == ARCHIVE_EOF) break;
+    if (r == ARCHIVE_RETRY) {
+      if (++entries > limits.maxEntries) break;
+      continue;
+    }
+    if (r == ARCHIVE_FATAL) {
+      if (entries == 0) {
+        Intake out;
+        out.error = "cannot read the archive " + submission.string() + ": " +
+                    archiveError(a.get()) +
+                    " (damaged or truncated? re-create the archive and submit it again)";
+        return out;
+      }
+      damage =
+          "the archive is damaged after " + std::to_string(entries) + " entries" +
+          (lastPath.empty() ? std::string() : " (the last one read: " + shownPath(lastPath) + ")") +
+          ": " + archiveError(a.get());
+      break;
+    }
+    // ARCHIVE_OK or ARCHIVE_WARN (e.g. a name in an unknown character set): go on.
+    const bool zip = (archive_format(a.get()) & ARCHIVE_FORMAT_BASE_MASK) == ARCHIVE_FORMAT_ZIP;
+    if (++entries > limits.maxEntries) {
+      c.note("reading stopped after " + std::to_string(limits.maxEntries) +
+             " entries (the limit): the archive holds too many files; entries after that "
+             "point were not looked at");
+      break;
+    }
+    if (consumed(zip) > limits.maxTotalBytes) {
+      c.note("reading stopped after " + humanBytes(limits.maxTotalBytes) +
+             " of data (the limit): the archive is too large; entries after that point were "
+             "not looked at");
+      break;
+    }
+    anyEntries = true;
+    const char* rawName = archive_entry_pathname_utf8(e);
+    if (rawName == nullptr) rawName = archive_entry_pathname(e);
+    if (rawName == nullptr) {
+      c.entryNote("entry " + std::to_string(entries) + ": skipped: its name cannot be read");
+      continue;
+    }
+    const std::string raw = rawName;
+    lastPath = raw;
+    const EntryPath p = splitPath(raw);
+    std::string target;
+    if (const char* t = archive_entry_hardlink(e))
+      target = t;
+    else if (const char* t2 = archive_entry_symlink(e))
+      target = t2;
+    const std::string name = screen(c, raw, p, kindOf(e), target, sawNested);
+    const bool sizeKnown = archive_entry_size_is_set(e) != 0;
+    const auto size = static_cast<std::uintmax_t>(std::max<la_int64_t>(0, archive_entry_size(e)));
+    if (name.empty()) {
+      // Skipping a tar entry decompresses it: stop before a huge one instead (zip seeks).
+      if (!zip && sizeKnown && consumed(zip) + size > limits.maxTotalBytes) {
+        c.note(shownPath(raw) + " holds " + humanBytes(size) +
+               ": reading stopped there, over the " + humanBytes(limits.maxTotalBytes) +
+               " limit for a whole submission; entries "
+               "after it were not looked at");
+        break;
+      }
+      continue;
+    }
+    const std::string rel = joinPath(p.parts);
+    c.seen(name, rel);
+    if (archive_entry_is_encrypted(e)) {
+      c.entryNote(shownPath(raw) + ": refused: it is encrypted; submit it without a password");
+      continue;
+    }
+    if (sizeKnown && size > limits.maxFileBytes) {
+      c.entryNote(tooLarge(raw, size, limits, false));
+      continue;
+    }
+    if (!c.wanted(name, rel, p.parts.size())) continue;
+    // Read it, never more than the cap (a zip's declared size may lie).
+    std::string data;
+    char buf[16 << 10];
+    bool over = false, failed = false;
+    for (;;) {
+      const la_ssize_t n = archive_read_data(a.get(), buf, sizeof buf);
+      if (n == 0) break;
+      if (n < 0) {
+        if (n == ARCHIVE_WARN || n == ARCHIVE_RETRY) continue;
+        failed = true;
+        break;
+      }
+      readBytes += static_cast<std::size_t>(n);
+      if (data.size() + static_cast<std::size_t>(n) > limits.maxFileBytes) {
+        over = true;
+        break;
+      }
+      data.append(buf, static_cast<std::size_t>(n));
+    }
+    if (failed) {
+      damage = "the archive is damaged: the data of " + shownPath(raw) + " cannot be read (" +
+               archiveError(a.get()) + ")";
+      break;
+    }
+    if (over) {
+      c.entryNote(tooLarge(raw, limits.maxFileBytes, limits, true));
+      continue;
+    }
+    c.offer(name, rel, p.parts.size(), std::move(data));
+  }
+  if (!damage.empty()) {
+    if (!c.anyChosen()) {
+      // Nothing usable: say so as an error, so that a TA asks for the archive again.
+      Intake out;
+      out.error = "cannot read the archive " + submission.string() + ": " + damage +
+                  "; no task file could be read before that point (damaged or truncated? "
+                  "re-create the archive and submit it again)";
+      return out;
+    }
+    c.note(damage +
+           "; reading stopped there and only the task files read before that point "
+           "are used");
+  }
+  return c.finish(dest, "archive", anyEntries, sawNested);
+}
+
+// ---- folders (std::filesystem, links never followed) ----
+
+Kind kindOf(fs::file_type t) {
+  switch (t) {
+    case fs::file_type::regular:
+      return Kind::Regular;
+    case fs::file_type::directory:
+      return Kind::Directory;
+    case fs::file_type::symlink:
+      return Kind::Symlink;
+    case fs::file_type::block:
+    case fs::file_type::character:
+      return Kind::Device;
+    case fs::file_type::fifo:
+      return Kind::Fifo;
+    case fs::file_type::socket:
+      return Kind::Socket;
+    default:
+      return Kind::Other;
+  }
+}
+
+// Reads a regular file without following a link at its name, at most `cap` + 1 bytes.
+std::optional<std::string> readNoFollow(const fs::path& path, std::size_t cap, std::string& why) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    why = std::strerror(errno);
+    return std::nullopt;
+  }
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    why = "not a regular file";
+    return std::nullopt;
+  }
+  std::string data;
+  char buf[16 << 10];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      why = std::strerror(errno);
+      ::close(fd);
+      return std::nullopt;
+    }
+    if (n == 0) break;
+    data.append(buf, static_cast<std::size_t>(n));
+    if (data.size() > cap) break;
+  }
+  ::close(fd);
+  return data;
+}
+
+Intake readFolder(const fs::path& root, const fs::path& dest, const IntakeLimits& limits) {
+  Collector c(limits);
+  bool anyEntries = false, sawNested = false;
+  std::size_t entries = 0;
+  std::error_code ec;
+  // The grader's own output folder may sit inside the submission folder: never read it back.
+  const fs::path destAbs = fs::weakly_canonical(dest, ec);
+  fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec);
+  if (ec) {
+    Intake out;
+    out.error = "cannot read the submission folder " + root.string() + ": " + ec.message() +
+                " (check that it exists and is readable)";
+    return out;
+  }
+  for (; it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (ec) {
+      c.note("the folder could not be read completely (" + ec.message() +
+             "); only the task files found before that point are used");
+      break;
+    }
+    if (++entries > limits.maxEntries) {
+      c.note("reading stopped after " + std::to_string(limits.maxEntries) +
+             " entries (the limit): the folder holds too many files; the rest was not looked "
+             "at");
+      break;
+    }
+    anyEntries = true;
+    const fs::path path = it->path();
+    const fs::path rel = path.lexically_relative(root);
+    const EntryPath p = splitPath(rel.generic_string());
+    std::error_code sec;
+    const fs::file_status st = fs::symlink_status(path, sec);
+    Kind kind = kindOf(st.type());
+    if (kind == Kind::Directory) {
+      if (fs::equivalent(path, destAbs, sec)) {
+        it.disable_recursion_pending();
+        continue;
+      }
+      if (static_cast<int>(p.parts.size()) >= limits.maxDepth) {
+        it.disable_recursion_pending();
+        c.entryNote(shownPath(rel.generic_string()) +
+                    ": not looked into: " + std::to_string(p.parts.size()) +
+                    " levels deep, the limit is " + std::to_string(limits.maxDepth));
+        continue;
+      }
+    }
+    std::string target;
+    if (kind == Kind::Symlink) target = fs::read_symlink(path, sec).string();
+    const std::string name = screen(c, rel.generic_string(), p, kind, target, sawNested);
+    if (name.empty()) continue;
+    const std::string relStr = joinPath(p.parts);
+    c.seen(name, relStr);
+    const auto size = fs::file_size(path, sec);
+    if (!sec && size > limits.maxFileBytes) {
+      c.entryNote(tooLarge(relStr, size, limits, false));
+      continue;
+    }
+    if (!c.wanted(name, relStr, p.parts.size())) continue;
+    std::string why;
+    auto data = readNoFollow(path, limits.maxFileBytes, why);
+    if (!data) {
+      c.entryNote(shownPath(relStr) + ": refused: cannot be read (" + why + ")");
+      continue;
+    }
+    if (data->size() > limits.maxFileBytes) {
+      c.entryNote(tooLarge(relStr, limits.maxFileBytes, limits, true));
+      continue;
+    }
+    c.offer(name, relStr, p.parts.size(), std::move(*data));
+  }
+  return c.finish(dest, "folder", anyEntries, sawNested);
+}
+
+}  // namespace
+
+Intake takeSubmission(const std::filesystem::path& submission, const std::filesystem::path& dest,
+                      const IntakeLimits& limits) {
+  try {
+    std::error_code ec;
+    // The submission path itself comes from the TA: follow it if it is a link.
+    const fs::file_status st = fs::status(submission, ec);
+    if (ec || st.type() == fs::file_type::not_found) {
+      Intake out;
+      out.error = "the submission " + submission.string() + " does not exist" +
+                  (ec && ec != std::errc::no_such_file_or_directory ? " (" + ec.message() + ")"
+                                                                    : std::string()) +
+                  "; check the path";
+      return out;
+    }
+    if (st.type() == fs::file_type::directory) return readFolder(submission, dest, limits);
+    if (st.type() == fs::file_type::regular) return readArchive(submission, dest, limits);
+    Intake out;
+    out.error = "the submission " + submission.string() +
+                " is neither a folder nor a regular file (an archive); check the path";
+    return out;
+  } catch (const std::exception& e) {
+    Intake out;
+    out.error =
+        std::string("reading the submission ") + submission.string() + " failed: " + e.what();
+    return out;
+  }
+}
+
+}  // namespace a6::grader

@@ -1,0 +1,606 @@
+// a6_grade: grades one submission (grader/DESIGN.md).
+//
+//   a6_grade SUBMISSION --out DIR [--rubric FILE] [--seed N] [--kit FILE] [--jobs N]
+//   a6_grade --list-tests [--rubric FILE]
+//
+// Stages: intake -> build -> run the physics suite (and the golden-image checks) in this process
+// against the sandboxed probe -> score with the rubric -> DIR/results.json (Gradescope),
+// DIR/report.html, a summary on stdout. Student code never runs in this process: the suite's
+// a6::test::student() is the probe.
+//
+// Exit status: 0 when grading completed, whatever the score (a submission that does not build
+// gets its zero with the reasons in the report); 1 when the grader itself failed (bad rubric,
+// missing kit, an environment that cannot run the checks, a report that could not be written):
+// results.json is still written, with score 0 and the error; 2 for a bad command line.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include "harness/student_code.h"
+#include "report.h"
+#include "rubric.h"
+#include "suite.h"
+
+#ifdef A6_GRADE_HAVE_INTAKE
+#include "intake.h"
+#endif
+#ifdef A6_GRADE_HAVE_BUILD
+#include "build.h"
+#endif
+#ifdef A6_GRADE_HAVE_PROBE
+#include "probe_client.h"
+#endif
+#ifdef A6_GRADE_HAVE_GOLDEN
+// The golden-image checks, when tests/golden provides them for the grader (target
+// a6_golden_checks): registerGoldenChecks(failuresDir) registers GoldenTask<N>.<image> tests that
+// run scenes through a6::test::student() and render and compare here; a failing one records the
+// properties student_image, reference_image and difference_image (paths of PNGs it wrote).
+#include "golden_checks.h"
+#endif
+
+#ifndef A6_DEFAULT_RUBRIC
+#define A6_DEFAULT_RUBRIC "rubric.toml"
+#endif
+
+namespace fs = std::filesystem;
+using namespace a6;
+using namespace a6::grader;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kDefaultTimeLimit = 10;            // s, for a test that matches no item
+constexpr std::size_t kProbeOutputCap = 64u << 10;  // what the report keeps of the probe's output
+
+// The student's code as the suite sees it in the grader: the probe, within the running test's
+// time budget. Without a probe (the build failed) every request fails with the reason, so each
+// check fails with a message instead of the grader stopping.
+class BudgetedStudent final : public harness::StudentCode {
+ public:
+  BudgetedStudent(harness::StudentCode* probe, std::function<void(double)> setTimeout,
+                  std::string unavailable)
+      : probe_(probe), setTimeout_(std::move(setTimeout)), unavailable_(std::move(unavailable)) {}
+
+  /// Why the probe could not be started at all (a grader problem), or "".
+  const std::string& startError() const { return startError_; }
+
+  /// A new check starts: its requests share `seconds` of wall-clock time.
+  void startTest(double seconds) {
+    limit_ = seconds;
+    deadline_ = Clock::now() +
+                std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+  }
+
+  harness::SpringForceResult springForce(const harness::SpringForceRequest& r) override {
+    return call<harness::SpringForceResult>([&] { return probe_->springForce(r); });
+  }
+  harness::ForcesResult forces(const harness::ForcesRequest& r) override {
+    return call<harness::ForcesResult>([&] { return probe_->forces(r); });
+  }
+  harness::SimulateResult simulate(const harness::SimulateRequest& r) override {
+    return call<harness::SimulateResult>([&] { return probe_->simulate(r); });
+  }
+  harness::ClothResult buildCloth(const ClothSpec& s) override {
+    return call<harness::ClothResult>([&] { return probe_->buildCloth(s); });
+  }
+  harness::ParticlesResult emit(const harness::EmitRequest& r) override {
+    return call<harness::ParticlesResult>([&] { return probe_->emit(r); });
+  }
+  harness::ParticlesResult runParticles(const harness::ParticleRunRequest& r) override {
+    return call<harness::ParticlesResult>([&] { return probe_->runParticles(r); });
+  }
+  harness::Box2DResult runBox2D(const harness::Box2DRequest& r) override {
+    return call<harness::Box2DResult>([&] { return probe_->runBox2D(r); });
+  }
+  harness::SceneResult runScene(const harness::SceneRequest& r) override {
+    return call<harness::SceneResult>([&] { return probe_->runScene(r); });
+  }
+
+ private:
+  template <class Result, class Call>
+  Result call(Call&& forward) {
+    Result result;
+    if (probe_ == nullptr) {
+      result.error = unavailable_;
+      return result;
+    }
+    const double remaining = std::chrono::duration<double>(deadline_ - Clock::now()).count();
+    if (remaining < 0.01) {
+      std::ostringstream out;
+      out << "this check's time limit of " << limit_
+          << " s ran out (is there an endless loop, or a loop that runs far too often?)";
+      result.error = out.str();
+      return result;
+    }
+    if (setTimeout_) setTimeout_(remaining);
+    try {
+      result = forward();
+      // The probe client's own words (never the probe's): the sandbox could not start it.
+      if (result.error.rfind("could not start the probe", 0) == 0 && startError_.empty()) {
+        startError_ = result.error;
+      }
+      return result;
+    } catch (const std::exception& e) {
+      result.error = std::string("the grader could not run your code: ") + e.what();
+    } catch (...) {
+      result.error = "the grader could not run your code (unknown error)";
+    }
+    return result;
+  }
+
+  harness::StudentCode* probe_;
+  std::function<void(double)> setTimeout_;
+  std::string unavailable_;
+  std::string startError_;
+  double limit_ = kDefaultTimeLimit;
+  Clock::time_point deadline_ = Clock::now();
+};
+
+BudgetedStudent* gStudent = nullptr;
+
+// True when `inner` is `outer` or lies inside it (both absolute and normal).
+bool isWithin(const fs::path& inner, const fs::path& outer) {
+  auto i = inner.begin();
+  for (auto o = outer.begin(); o != outer.end(); ++o, ++i) {
+    if (o->empty()) break;  // a trailing slash
+    if (i == inner.end() || *i != *o) return false;
+  }
+  return true;
+}
+
+// What the probe must not see: every secret (the source and build trees), except the paths it
+// needs (its work folder), which may lie inside one: then the secret's other entries are hidden,
+// down to the kept path. Links are not covered (that would cover their targets).
+void hideExcept(const fs::path& secret, const std::vector<fs::path>& keep,
+                std::vector<fs::path>& out, int depth = 0) {
+  std::vector<fs::path> inside;
+  for (const fs::path& k : keep) {
+    if (isWithin(secret, k)) return;
+    if (isWithin(k, secret)) inside.push_back(k);
+  }
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(secret, ec);
+  if (ec || !fs::exists(status) || fs::is_symlink(status)) return;
+  if (inside.empty() || !fs::is_directory(status) || depth > 64) {
+    out.push_back(secret);
+    return;
+  }
+  for (fs::directory_iterator it(secret, ec), end; !ec && it != end; it.increment(ec)) {
+    hideExcept(it->path(), inside, out, depth + 1);
+  }
+}
+
+std::vector<fs::path> hiddenFromProbe(const std::vector<fs::path>& secrets, const fs::path& work) {
+  std::vector<fs::path> hide;
+  for (const fs::path& secret : secrets) {
+    hideExcept(fs::absolute(secret).lexically_normal(), {work.lexically_normal()}, hide);
+  }
+  std::sort(hide.begin(), hide.end());
+  hide.erase(std::unique(hide.begin(), hide.end()), hide.end());
+  return hide;
+}
+
+// Records every test's outcome, from GoogleTest's events, and gives each test its time limit.
+class Collector : public ::testing::EmptyTestEventListener {
+ public:
+  Collector(const Rubric& rubric, std::vector<TestOutcome>& out, bool progress)
+      : rubric_(rubric), out_(out), progress_(progress) {}
+
+  int skipped() const { return skipped_; }
+
+  void OnTestStart(const ::testing::TestInfo& info) override {
+    current_ = TestOutcome{};
+    current_.name = std::string(info.test_suite_name()) + "." + info.name();
+    skipMessage_.clear();
+    const int item = rubric_.itemFor(current_.name);
+    const double limit = item >= 0 ? rubric_.items[static_cast<std::size_t>(item)].timeLimitSeconds
+                                   : kDefaultTimeLimit;
+    if (gStudent != nullptr) gStudent->startTest(limit);
+  }
+
+  void OnTestPartResult(const ::testing::TestPartResult& part) override {
+    if (part.skipped()) {
+      skipMessage_ += part.message();
+      return;
+    }
+    if (!part.failed()) return;
+    if (!current_.message.empty()) current_.message += "\n";
+    current_.message += part.message();
+  }
+
+  void OnTestEnd(const ::testing::TestInfo& info) override {
+    const ::testing::TestResult& result = *info.result();
+    current_.seconds = static_cast<double>(result.elapsed_time()) / 1000.0;
+    if (result.Skipped()) {
+      // A skipped check is the grader's environment failing (no GL for the images, say): it
+      // earns nothing, and the run reports a grader error.
+      ++skipped_;
+      current_.passed = false;
+      current_.message = "not run: " + (skipMessage_.empty() ? "skipped" : skipMessage_) +
+                         (current_.message.empty() ? "" : "\n" + current_.message);
+    } else {
+      current_.passed = result.Passed();
+    }
+    // Golden-image checks name their images (student, reference, difference) as properties.
+    std::string images[3];
+    for (int k = 0; k < result.test_property_count(); ++k) {
+      const ::testing::TestProperty& p = result.GetTestProperty(k);
+      const std::string key = p.key();
+      if (key == "student_image" || key == "actual_image") images[0] = p.value();
+      if (key == "reference_image" || key == "expected_image") images[1] = p.value();
+      if (key == "difference_image" || key == "diff_image") images[2] = p.value();
+    }
+    if (!images[0].empty()) {
+      for (const std::string& image : images) {
+        if (!image.empty()) current_.images.push_back(image);
+      }
+    }
+    if (progress_) {
+      std::fprintf(stderr, "  %-6s %s (%.2f s)\n", current_.passed ? "ok" : "FAILED",
+                   current_.name.c_str(), current_.seconds);
+    }
+    out_.push_back(std::move(current_));
+  }
+
+ private:
+  const Rubric& rubric_;
+  std::vector<TestOutcome>& out_;
+  bool progress_;
+  TestOutcome current_;
+  std::string skipMessage_;
+  int skipped_ = 0;
+};
+
+// The names of every registered test, in run order.
+std::vector<std::string> registeredTests() {
+  std::vector<std::string> names;
+  const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
+  for (int s = 0; s < unit.total_test_suite_count(); ++s) {
+    const ::testing::TestSuite& suite = *unit.GetTestSuite(s);
+    for (int t = 0; t < suite.total_test_count(); ++t) {
+      names.push_back(std::string(suite.name()) + "." + suite.GetTestInfo(t)->name());
+    }
+  }
+  return names;
+}
+
+// GoogleTest with pinned flags: nothing from the environment (GTEST_FILTER, ...) changes what
+// runs, and its own printer stays quiet (the summary is ours).
+void initGoogleTest(std::uint64_t seed, const std::string& filter) {
+  static char program[] = "a6_grade";
+  static char* argv[] = {program, nullptr};
+  int argc = 1;
+  ::testing::InitGoogleTest(&argc, argv);
+  GTEST_FLAG_SET(filter, filter.empty() ? std::string("*") : filter);
+  GTEST_FLAG_SET(also_run_disabled_tests, false);
+  GTEST_FLAG_SET(shuffle, false);
+  GTEST_FLAG_SET(repeat, 1);
+  GTEST_FLAG_SET(fail_fast, false);
+  GTEST_FLAG_SET(break_on_failure, false);
+  GTEST_FLAG_SET(throw_on_failure, false);
+  GTEST_FLAG_SET(catch_exceptions, true);
+  GTEST_FLAG_SET(output, std::string());
+  GTEST_FLAG_SET(brief, true);
+  // GoogleTest's seed (1..99999), for checks that draw their inputs at random.
+  GTEST_FLAG_SET(random_seed, static_cast<std::int32_t>(seed % 99999 + 1));
+  ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
+  delete listeners.Release(listeners.default_result_printer());
+}
+
+// The default seed: a hash of the six files taken, so the same submission always gets the same
+// inputs and a different one cannot know its own in advance.
+std::uint64_t seedOf(const std::map<std::string, fs::path>& files) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+  auto mix = [&h](const std::string& bytes) {
+    for (const unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+  };
+  for (const auto& [name, path] : files) {
+    mix(name);
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    mix(text.str());
+  }
+  return h % 1000000007ull;  // short enough to type in a regrade
+}
+
+fs::path besideProgram(const std::string& name) {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::path(name) : self.parent_path() / name;
+}
+
+fs::path defaultRubric() {
+  if (fs::exists(A6_DEFAULT_RUBRIC)) return A6_DEFAULT_RUBRIC;
+  return besideProgram("rubric.toml");
+}
+
+// --list-tests: every check and the item it counts for; 1 when some check or item is unmatched.
+int listTests(const Rubric& rubric) {
+  if (!rubric.ok()) {
+    std::fprintf(stderr, "a6_grade: the rubric is invalid:\n%s\n", rubric.error.c_str());
+    return 1;
+  }
+  std::vector<int> used(rubric.items.size(), 0);
+  int unmatched = 0;
+  for (const std::string& name : registeredTests()) {
+    const int item = rubric.itemFor(name);
+    if (item < 0) {
+      ++unmatched;
+      std::printf("%s\t-\n", name.c_str());
+    } else {
+      ++used[static_cast<std::size_t>(item)];
+      std::printf("%s\t%s\n", name.c_str(),
+                  rubric.items[static_cast<std::size_t>(item)].name.c_str());
+    }
+  }
+  int empty = 0;
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    if (used[i] == 0) {
+      ++empty;
+      std::fprintf(stderr, "a6_grade: rubric item '%s' matches no check\n",
+                   rubric.items[i].name.c_str());
+    }
+  }
+  if (unmatched > 0) std::fprintf(stderr, "a6_grade: %d checks match no rubric item\n", unmatched);
+  return unmatched == 0 && empty == 0 ? 0 : 1;
+}
+
+struct Options {
+  std::string submission;
+  std::string out;
+  std::string rubric;
+  std::string kit;
+  std::optional<std::uint64_t> seed;
+  int jobs = 0;
+  std::string filter;
+  bool listTests = false;
+  bool quiet = false;
+  bool color = false;
+};
+
+// One grading run. Every stage is guarded: a failure becomes an error in the report.
+int grade(const Options& options, const Rubric& rubric) {
+  const auto start = Clock::now();
+  GradeReport report;
+  report.submission = options.submission;
+  report.rubricTitle = rubric.title;
+  report.rubricFile = rubric.file;
+  report.maxScore = rubric.ok() ? rubric.totalPoints : 0;
+  const fs::path out = fs::absolute(options.out);
+  const fs::path results = out / "results.json";
+  const fs::path work = out / "work";
+  bool graderFailed = false;
+  auto fail = [&](const std::string& what) {
+    report.errors.push_back(what);
+    graderFailed = true;
+  };
+
+  // A results.json from the start: if this process dies, Gradescope still reads a zero with a
+  // reason instead of "the autograder failed to execute correctly".
+  {
+    GradeReport early = report;
+    early.errors.push_back("grading did not finish (the grader was killed or ran out of time)");
+    if (const std::string e = writeResultsJson(early, results); !e.empty()) {
+      std::fprintf(stderr, "a6_grade: %s\n", e.c_str());
+      return 1;
+    }
+  }
+  if (!rubric.ok()) fail("the rubric is invalid:\n" + rubric.error);
+
+  std::error_code ec;
+  fs::remove_all(work, ec);
+  fs::create_directories(work, ec);
+  if (ec) fail("cannot create " + work.string() + ": " + ec.message());
+
+    // 1. Intake.
+#ifdef A6_GRADE_HAVE_INTAKE
+  try {
+    report.intake = takeSubmission(options.submission, work / "src");
+  } catch (const std::exception& e) {
+    report.intake.error = std::string("reading the submission failed: ") + e.what();
+  }
+#else
+  report.intake.error = "this a6_grade was built without the intake library (grader/intake.cpp)";
+  fail(report.intake.error);
+#endif
+  report.seed = options.seed ? *options.seed : seedOf(report.intake.files);
+
+  // 2. Build.
+  std::string unavailable;
+  std::vector<fs::path> secrets;  // what the probe must not see either
+#ifdef A6_GRADE_HAVE_BUILD
+  try {
+    const Kit kit = loadKit(options.kit.empty() ? defaultKitPath() : fs::path(options.kit));
+    if (!kit.ok()) {
+      fail("the grader's kit is unusable: " + kit.error);
+      unavailable = "the grader could not build your code (a grader problem, not yours)";
+    } else {
+      secrets = kit.secrets;
+      report.build = buildProbe(kit, report.intake, work / "build");
+      // Each task already fell back to the starter where it had to: a probe that still does
+      // not link is the kit's fault, not the submission's.
+      if (!report.build.ok()) {
+        fail("no probe could be linked, so no check could pass (see the build error)");
+        unavailable =
+            "the grader could not build a program from your files (a grader problem, "
+            "not yours; your instructor sees the details)";
+      }
+    }
+  } catch (const std::exception& e) {
+    fail(std::string("building the submission failed: ") + e.what());
+    unavailable = "the grader could not build your code (a grader problem, not yours)";
+  }
+#else
+  fail("this a6_grade was built without the build library (grader/build.cpp)");
+  unavailable = "the grader could not build your code (a grader problem, not yours)";
+#endif
+
+  // 3. Run the checks here, against the probe.
+  std::unique_ptr<harness::StudentCode> probe;
+  std::function<void(double)> setTimeout;
+#ifdef A6_GRADE_HAVE_PROBE
+  if (unavailable.empty()) {
+    try {
+      auto client = std::make_unique<ProbeClient>(report.build.probe, work / "run", Limits{});
+      client->setHidden(hiddenFromProbe(secrets, work));
+      ProbeClient* raw = client.get();
+      setTimeout = [raw](double seconds) { raw->setRequestTimeout(seconds); };
+      probe = std::move(client);
+    } catch (const std::exception& e) {
+      fail(std::string("starting the probe failed: ") + e.what());
+      unavailable = "the grader could not start your code (a grader problem, not yours)";
+    }
+  }
+#else
+  if (unavailable.empty()) {
+    fail("this a6_grade was built without the probe client (grader/probe_client.cpp)");
+    unavailable = "the grader could not run your code (a grader problem, not yours)";
+  }
+#endif
+  BudgetedStudent student(probe.get(), setTimeout, unavailable);
+  gStudent = &student;
+  int skipped = 0;
+  try {
+    initGoogleTest(report.seed, options.filter);
+#ifdef A6_GRADE_HAVE_GOLDEN
+    a6::test::registerGoldenChecks((work / "images").string());
+#endif
+    auto* collector = new Collector(rubric, report.tests, !options.quiet);
+    ::testing::UnitTest::GetInstance()->listeners().Append(collector);  // GoogleTest owns it
+    if (!options.quiet)
+      std::fprintf(stderr, "a6_grade: running the checks (seed %llu)\n",
+                   static_cast<unsigned long long>(report.seed));
+    // Its status only repeats what the collector saw.
+    if (RUN_ALL_TESTS() != 0 && !options.quiet)
+      std::fprintf(stderr, "a6_grade: some checks failed\n");
+    skipped = collector->skipped();
+  } catch (const std::exception& e) {
+    fail(std::string("running the checks failed: ") + e.what());
+  }
+  if (!student.startError().empty()) {
+    fail("the sandbox could not start the probe, so checks failed that may not have: " +
+         student.startError());
+  }
+  if (skipped > 0) {
+    fail(std::to_string(skipped) +
+         " checks were skipped (the grader's environment could not run them; see each check's "
+         "message): they earned nothing");
+  }
+#ifdef A6_GRADE_HAVE_PROBE
+  if (probe != nullptr) {
+    try {
+      const auto* client = static_cast<ProbeClient*>(probe.get());
+      std::string text = client->output();
+      if (text.size() > kProbeOutputCap) text.resize(kProbeOutputCap);
+      report.probeOutput = text;
+      for (const std::string& note : client->notes()) report.notes.push_back("sandbox: " + note);
+      if (client->starts() > 1) {
+        report.notes.push_back("the probe was started " + std::to_string(client->starts()) +
+                               " times (restarted after crashes or time limits)");
+      }
+    } catch (...) {
+    }
+  }
+#endif
+  gStudent = nullptr;
+  probe.reset();
+
+  // 4. Score, 5. report.
+  try {
+    if (rubric.ok()) score(report, rubric);
+  } catch (const std::exception& e) {
+    fail(std::string("scoring failed: ") + e.what());
+  }
+  report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  int status = graderFailed ? 1 : 0;
+  if (const std::string e = writeResultsJson(report, results); !e.empty()) {
+    std::fprintf(stderr, "a6_grade: %s\n", e.c_str());
+    status = 1;
+  }
+  if (const std::string e = writeHtml(report, out / "report.html"); !e.empty()) {
+    std::fprintf(stderr, "a6_grade: %s\n", e.c_str());
+    status = 1;
+  }
+  std::fputs(terminalSummary(report, options.color).c_str(), stdout);
+  std::printf("results: %s\nreport:  %s\n", results.c_str(), (out / "report.html").c_str());
+  std::fflush(stdout);
+  return status;
+}
+
+}  // namespace
+
+namespace a6::test {
+harness::StudentCode& student() { return *gStudent; }
+}  // namespace a6::test
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"a6_grade: grades one Assignment 6 submission (docs/instructor.md)"};
+  app.add_option("submission", options.submission,
+                 "the submission: a folder, a .zip, a .tar or .tar.gz");
+  app.add_option("--out", options.out, "where results.json and report.html go (created)");
+  app.add_option("--rubric", options.rubric, "the rubric (default: grader/rubric.toml)");
+  app.add_option("--seed", options.seed,
+                 "the seed of the randomised checks (default: derived from the submission's "
+                 "files); the report records it for a regrade");
+  app.add_option("--kit", options.kit, "the kit description (default: BUILD/grader/kit.json)");
+  app.add_option("--jobs", options.jobs,
+                 "accepted for scripts that grade in batches; one grading compiles its six "
+                 "files one after another")
+      ->check(CLI::Range(0, 64));
+  app.add_option("--tests", options.filter,
+                 "only the checks matching this GoogleTest filter (debugging: the score is then "
+                 "partial)");
+  app.add_flag("--list-tests", options.listTests,
+               "print every check and the rubric item it counts for, then exit");
+  app.add_flag("--quiet,-q", options.quiet, "no progress on stderr");
+  app.add_flag("--color", options.color, "colour the summary");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+
+  Rubric rubric;
+  try {
+    rubric = loadRubric(options.rubric.empty() ? defaultRubric() : fs::path(options.rubric));
+  } catch (const std::exception& e) {
+    rubric.error = std::string("cannot load the rubric: ") + e.what();
+  }
+
+  if (options.listTests) {
+    initGoogleTest(1, options.filter);
+#ifdef A6_GRADE_HAVE_GOLDEN
+    a6::test::registerGoldenChecks((fs::temp_directory_path() / "a6_grade_list").string());
+#endif
+    return listTests(rubric);
+  }
+  if (options.submission.empty() || options.out.empty()) {
+    std::fprintf(stderr, "a6_grade: give a SUBMISSION and --out DIR (a6_grade --help)\n");
+    return 2;
+  }
+  try {
+    return grade(options, rubric);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "a6_grade: internal error: %s\n", e.what());
+  } catch (...) {
+    std::fprintf(stderr, "a6_grade: internal error\n");
+  }
+  return 1;
+}

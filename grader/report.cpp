@@ -1,0 +1,575 @@
+#include "report.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace a6::grader {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr std::size_t kItemOutputCap = 24u << 10;  // per rubric item in results.json
+constexpr std::size_t kMessageCap = 8u << 10;      // per test message
+constexpr std::size_t kCompilerCap = 8u << 10;     // compiler messages per task
+constexpr std::uintmax_t kImageCap = 16u << 20;    // an image larger than this is not embedded
+
+double round4(double x) { return std::round(x * 1e4) / 1e4; }
+
+std::string cap(const std::string& text, std::size_t limit) {
+  if (text.size() <= limit) return text;
+  return text.substr(0, limit) + "\n[... " + std::to_string(text.size() - limit) +
+         " more bytes cut]";
+}
+
+std::string fmt(double x) {
+  std::ostringstream out;
+  out << round4(x);
+  return out.str();
+}
+
+std::string fixed2(double x) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << x;
+  return out.str();
+}
+
+const TaskBuild* buildOf(const GradeReport& report, int task) {
+  if (task < 1 || task > static_cast<int>(kTaskFiles.size())) return nullptr;
+  for (const TaskBuild& t : report.build.tasks) {
+    if (t.file == kTaskFiles[static_cast<std::size_t>(task - 1)]) return &t;
+  }
+  return nullptr;
+}
+
+// 1..6 for a task file name, 0 otherwise.
+int taskOf(const std::string& file) {
+  for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {
+    if (kTaskFiles[i] == file) return static_cast<int>(i + 1);
+  }
+  return 0;
+}
+
+std::string describeBuild(const TaskBuild& t) {
+  switch (t.status) {
+    case TaskBuild::Status::Compiled:
+      return "compiled";
+    case TaskBuild::Status::Missing:
+      return "missing from the submission: graded with the starter code";
+    case TaskBuild::Status::CompileError:
+      return "did not compile: graded with the starter code";
+    case TaskBuild::Status::TimedOut:
+      return "the compiler ran out of time: graded with the starter code";
+    case TaskBuild::Status::LinkError:
+      return "compiled but could not be linked with the framework: graded with the starter code";
+  }
+  return "?";
+}
+
+std::string itemTitle(const ScoredItem& s) {
+  const int total = s.passed + s.failed;
+  return s.item.name + " (" + std::to_string(s.passed) + "/" + std::to_string(total) +
+         (total == 1 ? " check)" : " checks)");
+}
+
+// The text Gradescope shows under an item: why the task used the starter, then each failing
+// test with its message (which carries the hint).
+std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
+  std::string out;
+  if (const TaskBuild* t = buildOf(report, s.item.task); t != nullptr && t->usesStarter()) {
+    out += t->file + " " + describeBuild(*t) + ".\n";
+    if (!t->messages.empty()) out += "Compiler messages:\n" + cap(t->messages, kCompilerCap) + "\n";
+    out += "\n";
+  }
+  if (s.tests.empty()) {
+    out += "No check matched this item (a rubric problem; your instructor has been told).\n";
+  } else if (s.failed == 0) {
+    out += s.passed == 1 ? "The check passed.\n"
+                         : "All " + std::to_string(s.passed) + " checks passed.\n";
+  } else {
+    out += std::to_string(s.failed) + " of " + std::to_string(s.tests.size()) +
+           (s.tests.size() == 1 ? " check failed" : " checks failed") +
+           (s.item.allOrNothing ? " (all-or-nothing: no points)" : "") + ":\n";
+    for (const TestOutcome* t : s.tests) {
+      if (t->passed) continue;
+      out += "\nFAILED " + t->name + "\n" + cap(t->message, kMessageCap) + "\n";
+    }
+  }
+  return cap(out, kItemOutputCap);
+}
+
+std::string overallOutput(const GradeReport& report) {
+  std::ostringstream out;
+  if (!report.rubricTitle.empty()) out << report.rubricTitle << "\n";
+  out << "Score: " << fmt(report.score - report.extraCredit) << " / " << fmt(report.maxScore);
+  if (report.extraCredit > 0) out << " (+" << fmt(report.extraCredit) << " extra credit)";
+  out << "\n";
+  out << "Seed of the randomised checks: " << report.seed << "\n";
+  // What was taken from the submission.
+  if (!report.intake.ok()) {
+    out << "Your submission could not be read: " << report.intake.error << "\n";
+  } else {
+    std::string taken, missing;
+    for (const std::string& f : kTaskFiles) {
+      std::string& list = report.intake.files.count(f) != 0 ? taken : missing;
+      list += (list.empty() ? "" : ", ") + f;
+    }
+    out << "Files taken from your submission: " << (taken.empty() ? "none" : taken) << "\n";
+    if (!missing.empty()) out << "Not found (the starter code was used): " << missing << "\n";
+    for (const std::string& note : report.intake.notes) out << "Note: " << note << "\n";
+  }
+  // Build status per task.
+  if (!report.build.tasks.empty()) {
+    out << "Build:\n";
+    for (const TaskBuild& t : report.build.tasks) {
+      out << "  Task " << taskOf(t.file) << " " << t.file << ": " << describeBuild(t) << "\n";
+    }
+  }
+  if (!report.build.error.empty()) out << "Build failed: " << report.build.error << "\n";
+  for (const std::string& e : report.errors) out << "Grader error: " << e << "\n";
+  return out.str();
+}
+
+std::string readFile(const std::filesystem::path& file, std::uintmax_t limit, std::string& error) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (ec) {
+    error = "cannot read " + file.string() + ": " + ec.message();
+    return {};
+  }
+  if (size > limit) {
+    error = file.string() + " is too large to embed (" + std::to_string(size) + " bytes)";
+    return {};
+  }
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (!in && !in.eof()) error = "cannot read " + file.string();
+  return bytes.str();
+}
+
+std::string mimeOf(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".ppm" || ext == ".pnm") return "image/x-portable-pixmap";
+  if (ext == ".jpg" || ext == ".jpeg") return "image/jpeg";
+  return "image/png";
+}
+
+}  // namespace
+
+// Scoring --------------------------------------------------------------------------------------
+
+void score(GradeReport& report, const Rubric& rubric) {
+  report.items.clear();
+  report.score = report.extraCredit = 0;
+  report.maxScore = rubric.totalPoints;
+  report.rubricTitle = rubric.title;
+  report.rubricFile = rubric.file;
+  for (const RubricItem& item : rubric.items)
+    report.items.push_back(ScoredItem{item, 0, 0, 0, {}, {}});
+
+  // Each test counts for the first item that matches it.
+  for (const TestOutcome& t : report.tests) {
+    const int index = rubric.itemFor(t.name);
+    if (index < 0) {
+      report.warnings.push_back("test " + t.name + " matches no rubric item: it scores nothing");
+      continue;
+    }
+    ScoredItem& s = report.items[static_cast<std::size_t>(index)];
+    s.tests.push_back(&t);
+    (t.passed ? s.passed : s.failed)++;
+  }
+
+  std::map<int, int> rank;  // items seen so far per task, for "task.rank" numbers
+  double regular = 0;
+  for (ScoredItem& s : report.items) {
+    s.number = std::to_string(s.item.task) + "." + std::to_string(++rank[s.item.task]);
+    const int n = s.passed + s.failed;
+    if (n == 0) {
+      std::string where = rubric.file.empty() ? ""
+                                              : " (" + rubric.file.filename().string() + ":" +
+                                                    std::to_string(s.item.line) + ")";
+      report.warnings.push_back("rubric item '" + s.item.name + "'" + where +
+                                " matches no test: its " + fmt(s.item.points) +
+                                " points cannot be earned");
+      s.score = 0;
+    } else if (s.item.allOrNothing) {
+      s.score = s.failed == 0 ? s.item.points : 0;
+    } else {
+      // points * passed / n, not a sum of shares: full marks are exactly the points.
+      s.score = round4(s.item.points * s.passed / n);
+    }
+    (s.item.extraCredit ? report.extraCredit : regular) += s.score;
+  }
+  report.extraCredit = round4(report.extraCredit);
+  report.score = round4(regular + report.extraCredit);
+}
+
+// results.json ---------------------------------------------------------------------------------
+
+std::string resultsJson(const GradeReport& report) {
+  Json root;
+  root["score"] = report.score;
+  root["execution_time"] = static_cast<long long>(std::ceil(std::max(0.0, report.seconds)));
+  root["output"] = htmlEscape(overallOutput(report));
+  root["output_format"] = "simple_format";
+  root["test_output_format"] = "text";
+  root["test_name_format"] = "text";
+  root["visibility"] = "visible";
+  root["stdout_visibility"] = "hidden";
+
+  Json tests = Json::array();
+  for (const ScoredItem& s : report.items) {
+    Json t;
+    t["name"] = itemTitle(s);
+    t["number"] = s.number;
+    t["score"] = s.score;
+    // Extra credit carries its points in score over a max_score of 0, so the total can pass 100.
+    t["max_score"] = s.item.extraCredit ? 0.0 : s.item.points;
+    t["status"] = (s.failed == 0 && !s.tests.empty()) ? "passed" : "failed";
+    t["visibility"] = toString(s.item.visibility);
+    t["output"] = itemOutput(report, s);
+    Json tags = Json::array();
+    if (s.item.task > 0) tags.push_back("task" + std::to_string(s.item.task));
+    if (s.item.extraCredit) tags.push_back("extra_credit");
+    if (s.item.allOrNothing) tags.push_back("all_or_nothing");
+    t["tags"] = tags;
+    tests.push_back(std::move(t));
+  }
+  root["tests"] = std::move(tests);
+
+  // For instructors and scripts (never shown to students).
+  Json extra;
+  extra["seed"] = std::to_string(report.seed);
+  extra["submission"] = report.submission;
+  extra["rubric"] = report.rubricTitle;
+  extra["max_score"] = report.maxScore;
+  extra["extra_credit"] = report.extraCredit;
+  extra["seconds"] = round4(report.seconds);
+  Json outcomes = Json::object();
+  for (const TestOutcome& t : report.tests) outcomes[t.name] = t.passed ? "passed" : "failed";
+  extra["tests"] = std::move(outcomes);
+  extra["warnings"] = report.warnings;
+  extra["notes"] = report.notes;
+  extra["errors"] = report.errors;
+  root["extra_data"] = std::move(extra);
+
+  // Student-derived text may not be valid UTF-8: replace bad bytes rather than throw.
+  return root.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+std::string writeFileAtomically(const std::filesystem::path& file, const std::string& text) {
+  std::error_code ec;
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+  if (ec) return "cannot create " + file.parent_path().string() + ": " + ec.message();
+  const std::filesystem::path tmp =
+      file.string() + ".tmp." + std::to_string(static_cast<long>(::getpid()));
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return "cannot write " + tmp.string() + ": " + std::strerror(errno);
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string why = std::strerror(errno);
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      return "cannot write " + tmp.string() + ": " + why;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmp.c_str());
+    return "cannot write " + tmp.string() + ": " + why;
+  }
+  if (::rename(tmp.c_str(), file.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmp.c_str());
+    return "cannot rename " + tmp.string() + " to " + file.string() + ": " + why;
+  }
+  return {};
+}
+
+std::string writeResultsJson(const GradeReport& report, const std::filesystem::path& file) {
+  std::string text;
+  try {
+    text = resultsJson(report);
+  } catch (const std::exception& e) {
+    // Never leave Gradescope without a results.json: a minimal one that says what happened.
+    Json fallback;
+    fallback["score"] = 0;
+    fallback["output"] =
+        htmlEscape(std::string("The grader failed to write its report: ") + e.what());
+    fallback["output_format"] = "simple_format";
+    fallback["stdout_visibility"] = "hidden";
+    fallback["tests"] = Json::array();
+    text = fallback.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  }
+  return writeFileAtomically(file, text);
+}
+
+// HTML -----------------------------------------------------------------------------------------
+
+std::string htmlEscape(const std::string& text) {
+  std::string out;
+  out.reserve(text.size() + text.size() / 8);
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      case '\0':
+        out += "&#xFFFD;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string base64(const std::string& bytes) {
+  static const char* const alphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
+                       (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                       static_cast<unsigned char>(bytes[i + 2]);
+    out += alphabet[(v >> 18) & 63];
+    out += alphabet[(v >> 12) & 63];
+    out += alphabet[(v >> 6) & 63];
+    out += alphabet[v & 63];
+  }
+  if (i < bytes.size()) {
+    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+    if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    out += alphabet[(v >> 18) & 63];
+    out += alphabet[(v >> 12) & 63];
+    out += i + 1 < bytes.size() ? alphabet[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+namespace {
+
+const char* const kCss = R"(
+body { font: 14px/1.45 system-ui, sans-serif; margin: 2em auto; max-width: 72em; color: #222; }
+h1 { font-size: 1.6em; margin-bottom: .2em; } h2 { margin-top: 1.6em; border-bottom: 1px solid #ddd; }
+table { border-collapse: collapse; margin: .5em 0; } td, th { padding: .25em .7em; text-align: left;
+  border-bottom: 1px solid #eee; vertical-align: top; } th { background: #f5f5f5; }
+.num { text-align: right; font-variant-numeric: tabular-nums; }
+.pass { color: #17692b; font-weight: 600; } .fail { color: #b3261e; font-weight: 600; }
+.box { padding: .6em 1em; border-radius: 6px; margin: .6em 0; }
+.error { background: #fdecea; border: 1px solid #f5c2c0; } .warn { background: #fff7e0; border: 1px solid #f0d890; }
+pre { background: #f7f7f9; border: 1px solid #e4e4e8; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
+.images { display: flex; gap: 1em; flex-wrap: wrap; } figure { margin: 0; }
+figure img { max-width: 22em; border: 1px solid #ccc; image-rendering: pixelated; }
+figcaption { font-size: .85em; color: #555; text-align: center; }
+.tag { font-size: .8em; background: #eef; border-radius: 4px; padding: 0 .4em; margin-left: .4em; }
+)";
+
+void htmlImages(std::ostringstream& out, const TestOutcome& t) {
+  if (t.images.empty()) return;
+  static const char* const captions[] = {"student", "reference", "difference"};
+  out << "<div class=\"images\">";
+  for (std::size_t i = 0; i < t.images.size(); ++i) {
+    const std::string caption = i < 3 ? captions[i] : "image " + std::to_string(i + 1);
+    std::string error;
+    const std::string bytes = readFile(t.images[i], kImageCap, error);
+    out << "<figure>";
+    if (error.empty()) {
+      out << "<img alt=\"" << caption << "\" src=\"data:" << mimeOf(t.images[i]) << ";base64,"
+          << base64(bytes) << "\">";
+    } else {
+      out << "<pre>" << htmlEscape(error) << "</pre>";
+    }
+    out << "<figcaption>" << caption << ": " << htmlEscape(t.images[i].filename().string())
+        << "</figcaption></figure>";
+  }
+  out << "</div>";
+}
+
+}  // namespace
+
+std::string htmlReport(const GradeReport& report) {
+  std::ostringstream out;
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+      << "<title>Grade report: " << htmlEscape(report.submission) << "</title>"
+      << "<style>" << kCss << "</style></head><body>\n";
+  out << "<h1>" << htmlEscape(report.rubricTitle.empty() ? "Grade report" : report.rubricTitle)
+      << "</h1>\n";
+  out << "<p>Submission <code>" << htmlEscape(report.submission) << "</code> &middot; score <b>"
+      << fmt(report.score - report.extraCredit) << " / " << fmt(report.maxScore) << "</b>";
+  if (report.extraCredit > 0) out << " (+" << fmt(report.extraCredit) << " extra credit)";
+  out << " &middot; seed " << report.seed << " &middot; " << fixed2(report.seconds) << " s</p>\n";
+
+  if (!report.errors.empty() || !report.build.error.empty() || !report.intake.ok()) {
+    out << "<div class=\"box error\"><b>Grading problems</b><ul>";
+    if (!report.intake.ok()) out << "<li>intake: " << htmlEscape(report.intake.error) << "</li>";
+    if (!report.build.error.empty()) {
+      out << "<li>build: " << htmlEscape(report.build.error) << "</li>";
+    }
+    for (const std::string& e : report.errors) out << "<li>" << htmlEscape(e) << "</li>";
+    out << "</ul></div>\n";
+  }
+  if (!report.warnings.empty()) {
+    out << "<div class=\"box warn\"><b>Rubric warnings</b><ul>";
+    for (const std::string& w : report.warnings) out << "<li>" << htmlEscape(w) << "</li>";
+    out << "</ul></div>\n";
+  }
+  if (!report.notes.empty()) {
+    out << "<div class=\"box warn\"><b>Notes on this run</b><ul>";
+    for (const std::string& n : report.notes) out << "<li>" << htmlEscape(n) << "</li>";
+    out << "</ul></div>\n";
+  }
+
+  // The score table.
+  out << "<h2>Score</h2>\n<table><tr><th>#</th><th>item</th><th>visibility</th>"
+      << "<th class=\"num\">points</th><th class=\"num\">checks passed</th></tr>\n";
+  for (const ScoredItem& s : report.items) {
+    out << "<tr><td>" << s.number << "</td><td><a href=\"#item-" << s.number << "\">"
+        << htmlEscape(s.item.name) << "</a>";
+    if (s.item.extraCredit) out << "<span class=\"tag\">extra credit</span>";
+    if (s.item.allOrNothing) out << "<span class=\"tag\">all or nothing</span>";
+    out << "</td><td>" << toString(s.item.visibility) << "</td><td class=\"num\">" << fmt(s.score)
+        << " / " << fmt(s.item.points) << "</td><td class=\"num "
+        << (s.failed == 0 && !s.tests.empty() ? "pass" : "fail") << "\">" << s.passed << " / "
+        << s.tests.size() << "</td></tr>\n";
+  }
+  out << "<tr><th></th><th>total</th><th></th><th class=\"num\">"
+      << fmt(report.score - report.extraCredit) << " / " << fmt(report.maxScore);
+  if (report.extraCredit > 0) out << " + " << fmt(report.extraCredit);
+  out << "</th><th></th></tr></table>\n";
+
+  // Intake.
+  out << "<h2>Submission</h2>\n<table><tr><th>task file</th><th>graded copy</th>"
+      << "<th>build</th></tr>\n";
+  for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {
+    const std::string& f = kTaskFiles[i];
+    const auto found = report.intake.files.find(f);
+    const TaskBuild* t = buildOf(report, static_cast<int>(i + 1));
+    out << "<tr><td>Task " << i + 1 << " <code>" << f << "</code></td><td>"
+        << (found != report.intake.files.end()
+                ? "<code>" + htmlEscape(found->second.string()) + "</code>"
+                : std::string("<span class=\"fail\">not found</span>"))
+        << "</td><td>"
+        << (t == nullptr ? std::string("not built")
+                         : "<span class=\"" + std::string(t->usesStarter() ? "fail" : "pass") +
+                               "\">" + htmlEscape(describeBuild(*t)) + "</span>")
+        << "</td></tr>\n";
+  }
+  out << "</table>\n";
+  if (!report.intake.notes.empty()) {
+    out << "<p>Intake notes:</p><ul>";
+    for (const std::string& n : report.intake.notes) out << "<li>" << htmlEscape(n) << "</li>";
+    out << "</ul>\n";
+  }
+  for (const TaskBuild& t : report.build.tasks) {
+    if (t.messages.empty()) continue;
+    out << "<details" << (t.usesStarter() ? " open" : "")
+        << "><summary>Compiler messages for <code>" << htmlEscape(t.file)
+        << "</code></summary><pre>" << htmlEscape(cap(t.messages, 64u << 10))
+        << "</pre></details>\n";
+  }
+
+  // Every item with its tests.
+  for (const ScoredItem& s : report.items) {
+    out << "<h2 id=\"item-" << s.number << "\">" << s.number << " " << htmlEscape(s.item.name)
+        << " &mdash; " << fmt(s.score) << " / " << fmt(s.item.points) << "</h2>\n";
+    if (s.tests.empty()) {
+      out << "<p class=\"fail\">No test matched this item.</p>\n";
+      continue;
+    }
+    out << "<table><tr><th>test</th><th>result</th><th class=\"num\">time (s)</th></tr>\n";
+    for (const TestOutcome* t : s.tests) {
+      out << "<tr><td><code>" << htmlEscape(t->name) << "</code>";
+      if (!t->passed && !t->message.empty()) {
+        out << "<pre>" << htmlEscape(cap(t->message, 32u << 10)) << "</pre>";
+      }
+      htmlImages(out, *t);
+      out << "</td><td class=\"" << (t->passed ? "pass\">passed" : "fail\">failed")
+          << "</td><td class=\"num\">" << fixed2(t->seconds) << "</td></tr>\n";
+    }
+    out << "</table>\n";
+  }
+
+  if (!report.probeOutput.empty()) {
+    out << "<h2>Probe output</h2>\n<details><summary>What the student's code printed "
+        << "(capped; never used for scoring)</summary><pre>" << htmlEscape(report.probeOutput)
+        << "</pre></details>\n";
+  }
+  out << "</body></html>\n";
+  return out.str();
+}
+
+std::string writeHtml(const GradeReport& report, const std::filesystem::path& file) {
+  try {
+    return writeFileAtomically(file, htmlReport(report));
+  } catch (const std::exception& e) {
+    return std::string("cannot write the HTML report: ") + e.what();
+  }
+}
+
+// Terminal -------------------------------------------------------------------------------------
+
+std::string terminalSummary(const GradeReport& report, bool color) {
+  const char* green = color ? "\033[32m" : "";
+  const char* red = color ? "\033[31m" : "";
+  const char* bold = color ? "\033[1m" : "";
+  const char* reset = color ? "\033[0m" : "";
+  std::ostringstream out;
+  out << bold << (report.rubricTitle.empty() ? "Grade" : report.rubricTitle) << reset << " — "
+      << report.submission << " (seed " << report.seed << ")\n";
+  out << "  " << std::left << std::setw(6) << "#" << std::setw(44) << "item" << std::right
+      << std::setw(16) << "points"
+      << "   checks\n";
+  for (const ScoredItem& s : report.items) {
+    std::string name = s.item.name + (s.item.extraCredit ? " [extra]" : "");
+    if (name.size() > 43) name = name.substr(0, 40) + "...";
+    const std::string points = fixed2(s.score) + " / " + fixed2(s.item.points);
+    out << "  " << std::left << std::setw(6) << s.number << std::setw(44) << name << std::right
+        << std::setw(16) << points << "   " << (s.failed == 0 && !s.tests.empty() ? green : red)
+        << s.passed << " passed, " << s.failed << " failed" << reset << "\n";
+  }
+  out << "  " << std::left << std::setw(50) << "total" << std::right << std::setw(16)
+      << (fixed2(report.score - report.extraCredit) + " / " + fixed2(report.maxScore));
+  if (report.extraCredit > 0) out << "   +" << fixed2(report.extraCredit) << " extra credit";
+  out << "\n";
+  for (const TaskBuild& t : report.build.tasks) {
+    if (t.usesStarter()) out << "  " << red << t.file << ": " << describeBuild(t) << reset << "\n";
+  }
+  for (const std::string& w : report.warnings) out << "  warning: " << w << "\n";
+  for (const std::string& n : report.notes) out << "  note: " << n << "\n";
+  for (const std::string& e : report.errors) out << "  " << red << "error: " << e << reset << "\n";
+  return out.str();
+}
+
+}  // namespace a6::grader

@@ -1,0 +1,986 @@
+// The sandbox (see sandbox.h for what the child gets, in order).
+//
+// Design note: fork, then only system calls.
+// The grader may run several sandboxes from several threads. Between fork() and execve() the
+// child may only make async-signal-safe calls, so everything it needs (argv and envp arrays,
+// paths, the mount plan, the rlimits, the seccomp program) is prepared in a Plan before fork,
+// and the child reports what failed through a close-on-exec status pipe as fixed-size records
+// (stage, errno); the parent turns them into sentences. EOF on that pipe means execve worked.
+#include "sandbox.h"
+
+#include <fcntl.h>
+#include <linux/filter.h>
+#include <poll.h>
+#include <sched.h>
+#include <seccomp.h>
+#include <signal.h>
+#include <sys/mman.h>
+#include <sys/mount.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+namespace a6::grader {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string errnoText(int err) { return std::strerror(err); }
+
+std::string formatSeconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", s);
+  return text;
+}
+
+// Captured output
+// ----------------------------------------------------------------------------------
+
+struct Sink {
+  mutable std::mutex mutex;
+  std::string data;
+  std::size_t cap = 0;
+  bool truncated = false;
+
+  void add(const char* bytes, std::size_t n) {
+    std::lock_guard<std::mutex> lock(mutex);
+    const std::size_t room = cap > data.size() ? cap - data.size() : 0;
+    data.append(bytes, std::min(room, n));
+    if (n > room) truncated = true;
+  }
+  std::string text() const {
+    std::lock_guard<std::mutex> lock(mutex);
+    return data;
+  }
+};
+
+// Reads what is there; false at end of stream or on a hard error.
+bool readSome(int fd, Sink& sink) {
+  char buffer[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n > 0) {
+      sink.add(buffer, static_cast<std::size_t>(n));
+      continue;
+    }
+    if (n == 0) return false;
+    if (errno == EINTR) continue;
+    return errno == EAGAIN || errno == EWOULDBLOCK;
+  }
+}
+
+// The status records
+// ---------------------------------------------------------------------------------
+
+enum Stage : std::int32_t {
+  kSetsid = 1,
+  kUnshareMounts,
+  kMountPrivate,
+  kHide,
+  kReveal,
+  kUnshareNet,
+  kDevNull,
+  kFds,
+  kRlimit,
+  kChdir,
+  kSetgroups,
+  kSetgid,
+  kSetuid,
+  kDeathSignal,
+  kNoNewPrivs,
+  kSeccomp,
+  kExec,
+};
+
+struct Record {
+  std::int32_t fatal;
+  std::int32_t stage;
+  std::int32_t err;
+  std::int32_t index;
+};
+
+// The plan
+// --------------------------------------------------------------------------------------------
+
+struct MountOp {
+  enum Kind { HideDir, HideFile, Reveal } kind = HideDir;
+  std::size_t depth = 0;
+  std::string path;
+  // Reveal only:
+  std::vector<std::string> chain;  // the ancestors of path, outermost first
+  bool isDir = false;
+  int fd = -1;           // O_PATH fd on the original, opened by the child in its new
+                         // namespace (a bind source must be in the caller's namespace)
+  char source[32] = {};  // "/proc/self/fd/<fd>", written by the child
+};
+
+// "/proc/self/fd/<fd>" into out, without allocating.
+void procFdPath(int fd, char (&out)[32]) {
+  static const char prefix[] = "/proc/self/fd/";
+  char digits[12];
+  int n = 0;
+  do {
+    digits[n++] = static_cast<char>('0' + fd % 10);
+    fd /= 10;
+  } while (fd > 0 && n < 11);
+  std::size_t k = 0;
+  for (; prefix[k] != '\0'; ++k) out[k] = prefix[k];
+  while (n > 0) out[k++] = digits[--n];
+  out[k] = '\0';
+}
+
+struct Limit {
+  int resource;
+  rlim_t soft, hard;
+};
+
+struct Plan {
+  std::vector<std::string> args, envs;
+  std::vector<char*> argv, envp;
+  std::string workDir;
+  bool root = false;
+  bool dropPrivileges = false;
+  uid_t uid = 65534;
+  gid_t gid = 65534;
+  pid_t parent = 0;
+  std::vector<MountOp> ops;
+  std::vector<std::string> hidePaths;  // for messages, by op index
+  std::vector<Limit> limits;
+  std::vector<std::pair<int, int>> fds;  // {source, target} besides 0/1/2
+  int highBase = 0;
+  int maxFd = 1024;
+  int statusFd = -1;
+  int outFd = -1;
+  std::vector<sock_filter> filter;
+  std::vector<std::string> notes;  // found by the parent
+};
+
+const char* limitName(int resource) {
+  switch (resource) {
+    case RLIMIT_CPU:
+      return "RLIMIT_CPU";
+    case RLIMIT_AS:
+      return "RLIMIT_AS";
+    case RLIMIT_FSIZE:
+      return "RLIMIT_FSIZE";
+    case RLIMIT_NOFILE:
+      return "RLIMIT_NOFILE";
+    case RLIMIT_NPROC:
+      return "RLIMIT_NPROC";
+    case RLIMIT_CORE:
+      return "RLIMIT_CORE";
+    default:
+      return "an rlimit";
+  }
+}
+
+// Closes [lo, hi]; close_range where the kernel has it, else one by one.
+void closeRange(int lo, int hi, int maxFd) {
+  if (lo > hi) return;
+  if (syscall(SYS_close_range, static_cast<unsigned>(lo), static_cast<unsigned>(hi), 0u) == 0)
+    return;
+  for (int fd = lo; fd <= std::min(hi, maxFd); ++fd) ::close(fd);
+}
+
+// The child, between fork and execve: system calls only, no allocation.
+[[noreturn]] void childMain(Plan& p) {
+  int statusFd = p.statusFd;
+  auto report = [&](bool fatal, Stage stage, int err, int index) {
+    const Record r{fatal ? 1 : 0, stage, err, index};
+    ssize_t ignored = ::write(statusFd, &r, sizeof r);
+    (void)ignored;
+  };
+  auto die = [&](Stage stage, int index = -1) {
+    report(true, stage, errno, index);
+    _exit(127);
+  };
+
+  if (setsid() < 0) die(kSetsid);
+
+  // Namespaces: the grader's files out of sight, then no network.
+  if (p.root) {
+    if (!p.ops.empty()) {
+      if (unshare(CLONE_NEWNS) != 0) {
+        report(false, kUnshareMounts, errno, -1);
+      } else if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) {
+        report(false, kMountPrivate, errno, -1);
+      } else {
+        // Everything to reveal, opened before anything is covered.
+        for (std::size_t k = 0; k < p.ops.size(); ++k) {
+          MountOp& op = p.ops[k];
+          if (op.kind != MountOp::Reveal) continue;
+          op.fd = ::open(op.path.c_str(), O_PATH | O_CLOEXEC);
+          if (op.fd < 0) die(kReveal, static_cast<int>(k));
+          procFdPath(op.fd, op.source);
+        }
+        for (std::size_t k = 0; k < p.ops.size(); ++k) {
+          const MountOp& op = p.ops[k];
+          const int index = static_cast<int>(k);
+          struct stat st;
+          if (op.kind != MountOp::Reveal) {
+            if (lstat(op.path.c_str(), &st) != 0) continue;  // already under a hidden folder
+            int rc;
+            if (op.kind == MountOp::HideDir) {
+              rc = mount("a6-hidden", op.path.c_str(), "tmpfs", MS_NOSUID | MS_NODEV | MS_NOEXEC,
+                         "size=64k,mode=755");
+            } else {
+              rc = mount("/dev/null", op.path.c_str(), nullptr, MS_BIND, nullptr);
+              if (rc == 0) {
+                mount(nullptr, op.path.c_str(), nullptr, MS_BIND | MS_REMOUNT | MS_RDONLY, nullptr);
+              }
+            }
+            if (rc != 0) report(false, kHide, errno, index);
+            continue;
+          }
+          // Reveal: bind the original back, unless it is still visible as it is.
+          struct stat want;
+          if (fstat(op.fd, &want) != 0) die(kReveal, index);
+          if (stat(op.path.c_str(), &st) == 0 && st.st_dev == want.st_dev &&
+              st.st_ino == want.st_ino) {
+            continue;
+          }
+          for (const std::string& dir : op.chain) {
+            if (lstat(dir.c_str(), &st) != 0 &&
+                (errno != ENOENT || mkdir(dir.c_str(), 0755) != 0)) {
+              die(kReveal, index);
+            }
+          }
+          if (lstat(op.path.c_str(), &st) != 0) {
+            if (op.isDir) {
+              if (mkdir(op.path.c_str(), 0755) != 0) die(kReveal, index);
+            } else {
+              const int fd = ::open(op.path.c_str(), O_CREAT | O_WRONLY | O_CLOEXEC, 0644);
+              if (fd < 0) die(kReveal, index);
+              ::close(fd);
+            }
+          }
+          if (mount(op.source, op.path.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) {
+            die(kReveal, index);
+          }
+        }
+      }
+    }
+    if (unshare(CLONE_NEWNET) != 0) report(false, kUnshareNet, errno, -1);
+  }
+
+  // File descriptors: every source above every target first, then into place.
+  const int devNull = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+  if (devNull < 0) die(kDevNull);
+  statusFd = fcntl(statusFd, F_DUPFD_CLOEXEC, p.highBase);
+  if (statusFd < 0) _exit(127);
+  const int outFd = fcntl(p.outFd, F_DUPFD_CLOEXEC, p.highBase);
+  const int nullFd = fcntl(devNull, F_DUPFD_CLOEXEC, p.highBase);
+  if (outFd < 0 || nullFd < 0) die(kFds);
+  int moved[64];
+  const std::size_t count = std::min<std::size_t>(p.fds.size(), 64);
+  for (std::size_t k = 0; k < count; ++k) {
+    moved[k] = fcntl(p.fds[k].first, F_DUPFD_CLOEXEC, p.highBase);
+    if (moved[k] < 0) die(kFds, static_cast<int>(k));
+  }
+  if (dup2(nullFd, 0) < 0 || dup2(outFd, 1) < 0 || dup2(outFd, 2) < 0) die(kFds);
+  for (std::size_t k = 0; k < count; ++k) {
+    if (dup2(moved[k], p.fds[k].second) < 0) die(kFds, static_cast<int>(k));
+  }
+  // Close everything but 0-2, the targets and the status pipe (sorted: targets < highBase).
+  int keep[66];
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < count; ++k) keep[kept++] = p.fds[k].second;
+  keep[kept++] = statusFd;
+  std::sort(keep, keep + kept);
+  int next = 3;
+  for (std::size_t k = 0; k < kept; ++k) {
+    closeRange(next, keep[k] - 1, p.maxFd);
+    next = std::max(next, keep[k] + 1);
+  }
+  closeRange(next, 0x7fffffff, p.maxFd);
+
+  if (chdir(p.workDir.c_str()) != 0) die(kChdir);
+
+  // RLIMIT_NPROC comes after the uid change: set before it, a count of the new user's tasks
+  // that other sandboxes pushed over the limit meanwhile would make execve fail (EAGAIN).
+  auto applyLimits = [&](bool processes) {
+    for (std::size_t k = 0; k < p.limits.size(); ++k) {
+      if ((p.limits[k].resource == RLIMIT_NPROC) != processes) continue;
+      const rlimit lim{p.limits[k].soft, p.limits[k].hard};
+      if (setrlimit(p.limits[k].resource, &lim) != 0) die(kRlimit, static_cast<int>(k));
+    }
+  };
+  applyLimits(false);
+  if (p.dropPrivileges) {
+    // Raw system calls: in the child of a threaded parent, only this thread exists.
+    if (syscall(SYS_setgroups, 0, nullptr) != 0) die(kSetgroups);
+    if (syscall(SYS_setgid, p.gid) != 0) die(kSetgid);
+    if (syscall(SYS_setuid, p.uid) != 0) die(kSetuid);
+  }
+  applyLimits(true);
+  // Dies with the grader (set after the uid change, which clears it).
+  if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) die(kDeathSignal);
+  if (getppid() != p.parent) _exit(127);
+
+  if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) die(kNoNewPrivs);
+  if (!p.filter.empty()) {
+    sock_fprog prog{static_cast<unsigned short>(p.filter.size()),
+                    const_cast<sock_filter*>(p.filter.data())};
+    if (prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &prog) != 0) report(false, kSeccomp, errno, -1);
+  }
+
+  execve(p.argv[0], p.argv.data(), p.envp.data());
+  die(kExec);
+  _exit(127);  // not reached
+}
+
+// The seccomp program every sandboxed child gets (default: allow) ---------------------------------
+
+std::vector<sock_filter> buildFilter(bool noFork, std::string& error) {
+  scmp_filter_ctx ctx = seccomp_init(SCMP_ACT_ALLOW);
+  if (ctx == nullptr) {
+    error = "seccomp_init failed";
+    return {};
+  }
+  int rc = 0;
+  auto deny = [&](int syscall, int err, unsigned args = 0, scmp_arg_cmp cmp = {}) {
+    if (rc == 0) {
+      rc = args == 0 ? seccomp_rule_add(ctx, SCMP_ACT_ERRNO(err), syscall, 0)
+                     : seccomp_rule_add(ctx, SCMP_ACT_ERRNO(err), syscall, 1, cmp);
+    }
+  };
+  deny(SCMP_SYS(socket), EACCES);
+  for (int sc : {SCMP_SYS(io_uring_setup), SCMP_SYS(io_uring_enter), SCMP_SYS(io_uring_register),
+                 SCMP_SYS(ptrace), SCMP_SYS(process_vm_readv), SCMP_SYS(process_vm_writev)}) {
+    deny(sc, EPERM);
+  }
+  if (noFork) {
+    deny(SCMP_SYS(fork), EPERM);
+    deny(SCMP_SYS(vfork), EPERM);
+    deny(SCMP_SYS(clone), EPERM, 1, SCMP_A0(SCMP_CMP_MASKED_EQ, CLONE_THREAD, 0));
+    deny(SCMP_SYS(clone3), ENOSYS);  // glibc then falls back to clone, checked above
+  }
+  std::vector<sock_filter> program;
+  if (rc == 0) {
+    const int fd = memfd_create("a6-seccomp", MFD_CLOEXEC);
+    if (fd < 0) {
+      rc = -errno;
+    } else {
+      rc = seccomp_export_bpf(ctx, fd);
+      const off_t size = lseek(fd, 0, SEEK_END);
+      if (rc == 0 && size > 0 && size % static_cast<off_t>(sizeof(sock_filter)) == 0) {
+        program.resize(static_cast<std::size_t>(size) / sizeof(sock_filter));
+        if (pread(fd, program.data(), static_cast<std::size_t>(size), 0) != size) program.clear();
+      }
+      ::close(fd);
+    }
+  }
+  seccomp_release(ctx);
+  if (program.empty())
+    error = "could not build the seccomp filter: " + errnoText(rc < 0 ? -rc : EINVAL);
+  return program;
+}
+
+const std::vector<sock_filter>& filterFor(bool noFork, std::string& error) {
+  static std::once_flag once[2];
+  static std::vector<sock_filter> programs[2];
+  static std::string errors[2];
+  const int k = noFork ? 1 : 0;
+  std::call_once(once[k], [&] { programs[k] = buildFilter(noFork, errors[k]); });
+  error = errors[k];
+  return programs[k];
+}
+
+// Tasks (threads) of a user, from /proc: RLIMIT_NPROC counts them all.
+long tasksOf(uid_t uid) {
+  long total = 0;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator("/proc", ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream status(entry.path() / "status");
+    std::string line;
+    bool mine = false;
+    long threads = 1;
+    while (std::getline(status, line)) {
+      if (line.compare(0, 4, "Uid:") == 0) {
+        std::istringstream in(line.substr(4));
+        long real = -1;
+        in >> real;
+        mine = real == static_cast<long>(uid);
+      } else if (line.compare(0, 8, "Threads:") == 0) {
+        threads = std::max(1L, std::atol(line.c_str() + 8));
+      }
+    }
+    if (mine) total += threads;
+  }
+  return total;
+}
+
+bool within(const fs::path& path, const fs::path& folder) {
+  auto p = path.begin();
+  for (auto f = folder.begin(); f != folder.end(); ++f, ++p) {
+    if (p == path.end() || *p != *f) return false;
+  }
+  return true;
+}
+
+std::size_t depthOf(const fs::path& path) {
+  return static_cast<std::size_t>(std::distance(path.begin(), path.end()));
+}
+
+fs::path canonicalish(const fs::path& path) {
+  std::error_code ec;
+  fs::path out = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return ec ? fs::absolute(path).lexically_normal() : out;
+}
+
+// Creates the work dir fresh and empty, writable by the user the child runs as.
+std::string prepareWorkDir(const fs::path& dir, const Plan& plan) {
+  if (dir.empty()) return "no work dir given";
+  const fs::path abs = fs::absolute(dir).lexically_normal();
+  if (abs == abs.root_path() || depthOf(abs) < 3) {
+    return "refusing to use " + abs.string() + " as a work dir (too close to /)";
+  }
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(abs, ec);
+  if (fs::exists(st)) {
+    if (fs::is_directory(st)) {
+      fs::remove_all(abs, ec);
+    } else {
+      fs::remove(abs, ec);
+    }
+    if (ec) return "cannot empty the work dir " + abs.string() + ": " + ec.message();
+  }
+  fs::create_directories(abs, ec);
+  if (ec) return "cannot create the work dir " + abs.string() + ": " + ec.message();
+  ::chmod(abs.c_str(), 0700);
+  if (plan.dropPrivileges && ::chown(abs.c_str(), plan.uid, plan.gid) != 0) {
+    return "cannot hand the work dir " + abs.string() + " to uid " + std::to_string(plan.uid) +
+           ": " + errnoText(errno);
+  }
+  return "";
+}
+
+void deleteWorkDir(const std::string& dir) {
+  if (dir.empty()) return;
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+}
+
+// Everything before fork. Returns an error, or "".
+std::string makePlan(const SandboxSpec& spec, Plan& plan) {
+  if (spec.argv.empty() || spec.argv[0].empty() || spec.argv[0][0] != '/') {
+    return "argv[0] must be an absolute path" +
+           (spec.argv.empty() ? std::string() : " (got '" + spec.argv[0] + "')");
+  }
+  plan.root = geteuid() == 0;
+  plan.dropPrivileges = plan.root && spec.uid != 0;
+  plan.uid = spec.uid;
+  plan.gid = spec.gid;
+  plan.parent = getpid();
+  plan.args = spec.argv;
+  plan.envs = spec.env;
+  for (std::string& a : plan.args) plan.argv.push_back(a.data());
+  plan.argv.push_back(nullptr);
+  for (std::string& e : plan.envs) plan.envp.push_back(e.data());
+  plan.envp.push_back(nullptr);
+
+  if (std::string e = prepareWorkDir(spec.workDir, plan); !e.empty()) return e;
+  plan.workDir = fs::absolute(spec.workDir).lexically_normal().string();
+
+  // Hidden paths and what stays visible inside them.
+  std::vector<fs::path> hidden;
+  std::vector<std::string> unreadable;
+  for (const fs::path& h : spec.hide) {
+    const fs::path path = canonicalish(h);
+    struct stat st;
+    if (lstat(path.c_str(), &st) != 0) continue;  // nothing to hide
+    if (path == path.root_path()) {
+      plan.notes.push_back("refusing to hide / (everything would be hidden)");
+      continue;
+    }
+    if (!plan.root) {
+      unreadable.push_back(path.string() + ((st.st_mode & S_IROTH) != 0
+                                                ? " (readable by every user: chmod -R o-rwx it)"
+                                                : ""));
+      continue;
+    }
+    MountOp op;
+    op.kind = S_ISDIR(st.st_mode) ? MountOp::HideDir : MountOp::HideFile;
+    op.path = path.string();
+    op.depth = depthOf(path);
+    plan.ops.push_back(op);
+    hidden.push_back(path);
+  }
+  if (!unreadable.empty()) {
+    std::string note =
+        "not running as root, so these paths cannot be hidden and only file "
+        "permissions protect them:";
+    for (const std::string& u : unreadable) note += " " + u;
+    plan.notes.push_back(note);
+  }
+  if (!plan.ops.empty()) {
+    std::vector<fs::path> reveals = spec.reveal;
+    reveals.push_back(plan.workDir);
+    reveals.push_back(spec.argv[0]);
+    for (const fs::path& r : reveals) {
+      const fs::path path = canonicalish(r);
+      if (std::none_of(hidden.begin(), hidden.end(),
+                       [&](const fs::path& h) { return within(path, h); })) {
+        continue;
+      }
+      MountOp op;
+      op.kind = MountOp::Reveal;
+      op.path = path.string();
+      op.depth = depthOf(path);
+      struct stat st;
+      if (stat(path.c_str(), &st) != 0) {
+        plan.notes.push_back("cannot keep " + op.path + " visible: " + errnoText(errno));
+        continue;
+      }
+      op.isDir = S_ISDIR(st.st_mode);
+      for (fs::path a = path.parent_path(); a != a.root_path(); a = a.parent_path()) {
+        op.chain.insert(op.chain.begin(), a.string());
+      }
+      plan.ops.push_back(op);
+    }
+    // Outer paths first; at equal depth, hide before revealing.
+    std::stable_sort(plan.ops.begin(), plan.ops.end(), [](const MountOp& a, const MountOp& b) {
+      if (a.depth != b.depth) return a.depth < b.depth;
+      return (a.kind == MountOp::Reveal ? 1 : 0) < (b.kind == MountOp::Reveal ? 1 : 0);
+    });
+  }
+
+  // Limits.
+  const Limits& l = spec.limits;
+  const auto cpu = static_cast<rlim_t>(std::max(1.0, std::ceil(l.cpuSeconds)));
+  plan.limits.push_back({RLIMIT_CPU, cpu, cpu + 1});  // SIGXCPU first, SIGKILL a second later
+  plan.limits.push_back({RLIMIT_AS, l.memoryBytes, l.memoryBytes});
+  plan.limits.push_back({RLIMIT_FSIZE, l.fileSizeBytes, l.fileSizeBytes});
+  const auto files = static_cast<rlim_t>(std::max(8, l.openFiles));
+  plan.limits.push_back({RLIMIT_NOFILE, files, files});
+  plan.limits.push_back({RLIMIT_CORE, 0, 0});
+  const long tasks = tasksOf(plan.dropPrivileges ? plan.uid : getuid());
+  const auto nproc = static_cast<rlim_t>(tasks + 1 + std::max(0, l.processes));
+  plan.limits.push_back({RLIMIT_NPROC, nproc, nproc});
+
+  // Descriptors.
+  int highest = 2;
+  for (int fd : spec.keepFds) {
+    plan.fds.push_back({fd, fd});
+    highest = std::max(highest, fd);
+  }
+  for (const auto& [from, to] : spec.mapFds) {
+    if (to < 3) return "mapFds: child fd " + std::to_string(to) + " is one of 0, 1, 2";
+    plan.fds.push_back({from, to});
+    highest = std::max(highest, to);
+  }
+  if (plan.fds.size() > 64) return "too many fds to pass (64 at most)";
+  plan.highBase = highest + 1;
+  rlimit nofile{};
+  getrlimit(RLIMIT_NOFILE, &nofile);
+  plan.maxFd = static_cast<int>(std::min<rlim_t>(nofile.rlim_cur, 65536));
+  if (plan.highBase + 70 > plan.maxFd) return "fd numbers too high to pass";
+
+  std::string filterError;
+  plan.filter = filterFor(l.processes <= 0, filterError);
+  if (!filterError.empty()) plan.notes.push_back(filterError + "; sockets are not refused");
+  return "";
+}
+
+std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec& spec) {
+  const std::string err = errnoText(r.err);
+  const auto& op = [&]() -> const MountOp& {
+    static const MountOp none;
+    return r.index >= 0 && static_cast<std::size_t>(r.index) < plan.ops.size() ? plan.ops[r.index]
+                                                                               : none;
+  };
+  switch (r.stage) {
+    case kSetsid:
+      return "setsid: " + err;
+    case kUnshareMounts:
+      return "could not hide the grader's files (unshare(CLONE_NEWNS): " + err +
+             "): only file permissions protect them";
+    case kMountPrivate:
+      return "could not hide the grader's files (making / private: " + err +
+             "): only file permissions protect them";
+    case kHide:
+      return "could not hide " + op().path + " (mount: " + err + ")";
+    case kReveal:
+      return "could not keep " + op().path + " visible under a hidden path: " + err;
+    case kUnshareNet:
+      return "no network namespace (unshare(CLONE_NEWNET): " + err +
+             "): sockets are refused by the seccomp filter only";
+    case kDevNull:
+      return "opening /dev/null: " + err;
+    case kFds:
+      return "passing file descriptors: " + err;
+    case kRlimit:
+      return std::string("setting ") +
+             (r.index >= 0 && static_cast<std::size_t>(r.index) < plan.limits.size()
+                  ? limitName(plan.limits[r.index].resource)
+                  : "an rlimit") +
+             ": " + err;
+    case kChdir:
+      return "entering the work dir " + plan.workDir + ": " + err;
+    case kSetgroups:
+      return "dropping supplementary groups: " + err;
+    case kSetgid:
+      return "switching to gid " + std::to_string(plan.gid) + ": " + err;
+    case kSetuid:
+      return "switching to uid " + std::to_string(plan.uid) + ": " + err;
+    case kDeathSignal:
+      return "setting the parent-death signal: " + err;
+    case kNoNewPrivs:
+      return "setting no_new_privs: " + err;
+    case kSeccomp:
+      return "could not install the seccomp filter (" + err + "): sockets are not refused";
+    case kExec: {
+      std::string text = "exec " + spec.argv[0] + ": " + err;
+      if (r.err == EACCES && plan.dropPrivileges) {
+        text += " (it runs as uid " + std::to_string(plan.uid) +
+                ": the program and every folder above it must be readable and searchable by "
+                "other users)";
+      }
+      return text;
+    }
+    default:
+      return "unknown setup stage " + std::to_string(r.stage) + ": " + err;
+  }
+}
+
+// A started child: its pid, its output pipe, and what the setup said.
+struct Started {
+  pid_t pid = -1;
+  int outFd = -1;
+  std::string error;
+  std::vector<std::string> notes;
+  std::string workDir;
+};
+
+Started start(const SandboxSpec& spec) {
+  Started s;
+  Plan plan;
+  s.error = makePlan(spec, plan);
+  s.workDir = plan.workDir;
+  s.notes = plan.notes;
+  if (!s.error.empty()) {
+    return s;
+  }
+  int out[2], status[2];
+  if (pipe2(out, O_CLOEXEC) != 0) {
+    s.error = "pipe: " + errnoText(errno);
+    return s;
+  }
+  if (pipe2(status, O_CLOEXEC) != 0) {
+    s.error = "pipe: " + errnoText(errno);
+    ::close(out[0]);
+    ::close(out[1]);
+    return s;
+  }
+  plan.outFd = out[1];
+  plan.statusFd = status[1];
+
+  const pid_t pid = fork();
+  if (pid == 0) childMain(plan);
+  ::close(out[1]);
+  ::close(status[1]);
+  if (pid < 0) {
+    s.error = "fork: " + errnoText(errno);
+    ::close(out[0]);
+    ::close(status[0]);
+    return s;
+  }
+
+  // Until execve: the child's setup reports (EOF means it ran the program).
+  bool fatal = false;
+  Record r;
+  std::size_t got = 0;
+  const auto deadline = Clock::now() + std::chrono::seconds(30);
+  for (;;) {
+    pollfd pfd{status[0], POLLIN, 0};
+    const int wait = static_cast<int>(std::max<long long>(
+        0, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count()));
+    const int ready = poll(&pfd, 1, wait);
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) {
+      s.error = "the sandboxed child did not start within 30 s";
+      fatal = true;
+      break;
+    }
+    const ssize_t n = ::read(status[0], reinterpret_cast<char*>(&r) + got, sizeof r - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+    if (got < sizeof r) continue;
+    got = 0;
+    const std::string text = describeRecord(r, plan, spec);
+    if (r.fatal != 0) {
+      s.error = text;
+      fatal = true;
+    } else {
+      s.notes.push_back(text);
+    }
+  }
+  ::close(status[0]);
+  if (fatal) {
+    kill(-pid, SIGKILL);
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+    ::close(out[0]);
+    return s;
+  }
+  fcntl(out[0], F_SETFL, fcntl(out[0], F_GETFL) | O_NONBLOCK);
+  s.pid = pid;
+  s.outFd = out[0];
+  return s;
+}
+
+// Fills kind and code from a wait status.
+void setEnding(Exit& exit, int status) {
+  if (WIFSIGNALED(status)) {
+    exit.kind = Exit::Kind::Signaled;
+    exit.code = WTERMSIG(status);
+  } else {
+    exit.kind = Exit::Kind::Exited;
+    exit.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+}
+
+// True once `pid` has ended (left unreaped).
+bool hasEnded(pid_t pid) {
+  siginfo_t info{};
+  return waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 &&
+         info.si_pid == pid;
+}
+
+// Kills the whole group (the child stays unreaped until then, so its pgid is not reused) and
+// reaps the child.
+int killAndReap(pid_t pid) {
+  kill(-pid, SIGKILL);
+  kill(pid, SIGKILL);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return status;
+}
+
+const char* signalText(int sig) {
+  switch (sig) {
+    case SIGSEGV:
+      return "SIGSEGV (segmentation fault)";
+    case SIGABRT:
+      return "SIGABRT (aborted: abort(), a failed assert or an uncaught exception)";
+    case SIGFPE:
+      return "SIGFPE (arithmetic exception, e.g. an integer division by zero)";
+    case SIGBUS:
+      return "SIGBUS (bus error: a bad memory access)";
+    case SIGILL:
+      return "SIGILL (illegal instruction)";
+    case SIGKILL:
+      return "SIGKILL (killed by the grader or the memory limit)";
+    case SIGXCPU:
+      return "SIGXCPU (CPU time limit exceeded)";
+    case SIGXFSZ:
+      return "SIGXFSZ (file size limit exceeded)";
+    case SIGSYS:
+      return "SIGSYS (a system call the sandbox refuses)";
+    case SIGPIPE:
+      return "SIGPIPE (broken pipe)";
+    case SIGTERM:
+      return "SIGTERM (terminated)";
+    case SIGTRAP:
+      return "SIGTRAP (trace/breakpoint trap)";
+    default:
+      return nullptr;
+  }
+}
+
+}  // namespace
+
+std::string Exit::describe() const {
+  switch (kind) {
+    case Kind::Exited:
+      return "exited with " + std::to_string(code);
+    case Kind::Signaled: {
+      const char* text = signalText(code);
+      return std::string("killed by ") +
+             (text != nullptr ? text : "signal " + std::to_string(code));
+    }
+    case Kind::TimedOut:
+      return "timed out after " + formatSeconds(wallSeconds) + " s and was killed";
+    case Kind::FailedToStart:
+      return "failed to start: " + error;
+  }
+  return "ended in an unknown way";
+}
+
+// runSandboxed
+// -------------------------------------------------------------------------------------
+
+Exit runSandboxed(const SandboxSpec& spec) {
+  const auto begin = Clock::now();
+  Exit exit;
+  Started s = start(spec);
+  exit.notes = s.notes;
+  if (!s.error.empty()) {
+    exit.kind = Exit::Kind::FailedToStart;
+    exit.error = s.error;
+    if (spec.removeWorkDir) deleteWorkDir(s.workDir);
+    exit.wallSeconds = secondsSince(begin);
+    return exit;
+  }
+  Sink sink;
+  sink.cap = spec.limits.outputBytes;
+  const auto deadline =
+      begin + std::chrono::duration_cast<Clock::duration>(
+                  std::chrono::duration<double>(std::max(0.0, spec.limits.wallSeconds)));
+  const int pidFd = static_cast<int>(syscall(SYS_pidfd_open, s.pid, 0));
+  bool ended = false, timedOut = false, outOpen = true;
+  int status = 0;
+  Clock::time_point graceEnd{};
+  for (;;) {
+    if (!ended && hasEnded(s.pid)) {
+      ended = true;
+      status = killAndReap(s.pid);  // stragglers of its group go too
+      graceEnd = Clock::now() + std::chrono::milliseconds(500);
+    }
+    if (!ended && Clock::now() >= deadline) {
+      timedOut = true;
+      ended = true;
+      status = killAndReap(s.pid);
+      graceEnd = Clock::now() + std::chrono::milliseconds(500);
+    }
+    if (ended && (!outOpen || Clock::now() >= graceEnd)) break;
+    // Wait for output, the child's end (pidfd), or the next check.
+    pollfd pfds[2];
+    nfds_t n = 0;
+    if (outOpen) pfds[n++] = {s.outFd, POLLIN, 0};
+    if (!ended && pidFd >= 0) pfds[n++] = {pidFd, POLLIN, 0};
+    const auto until = ended ? graceEnd : deadline;
+    long long wait =
+        std::chrono::duration_cast<std::chrono::milliseconds>(until - Clock::now()).count() + 1;
+    if (pidFd < 0 && !ended) wait = std::min(wait, 5LL);  // no pidfd: poll the child
+    poll(pfds, n, static_cast<int>(std::clamp(wait, 0LL, 1000LL)));
+    if (outOpen && !readSome(s.outFd, sink)) outOpen = false;
+  }
+  if (pidFd >= 0) ::close(pidFd);
+  ::close(s.outFd);
+  if (timedOut) {
+    exit.kind = Exit::Kind::TimedOut;
+    exit.code = SIGKILL;
+  } else {
+    setEnding(exit, status);
+  }
+  exit.output = sink.text();
+  exit.outputTruncated = sink.truncated;
+  exit.wallSeconds = timedOut ? spec.limits.wallSeconds : secondsSince(begin);
+  if (spec.removeWorkDir) deleteWorkDir(s.workDir);
+  return exit;
+}
+
+// SandboxedProcess
+// -------------------------------------------------------------------------------------
+
+struct SandboxedProcess::State {
+  Sink sink;
+  int outFd = -1;
+  std::thread drainer;
+  std::atomic<bool> stopping{false};
+  Clock::time_point begin;
+  std::string workDir;
+  bool removeWorkDir = false;
+  std::vector<std::string> notes;
+  bool stopped = false;
+  Exit exit;
+  std::mutex mutex;  // stop() and alive() from several threads
+};
+
+SandboxedProcess::SandboxedProcess(const SandboxSpec& spec) : state_(new State) {
+  state_->begin = Clock::now();
+  state_->sink.cap = spec.limits.outputBytes;
+  state_->removeWorkDir = spec.removeWorkDir;
+  Started s = start(spec);
+  state_->notes = s.notes;
+  state_->workDir = s.workDir;
+  if (!s.error.empty()) {
+    error_ = s.error;
+    state_->stopped = true;
+    state_->exit.kind = Exit::Kind::FailedToStart;
+    state_->exit.error = s.error;
+    state_->exit.notes = s.notes;
+    if (state_->removeWorkDir) deleteWorkDir(state_->workDir);
+    return;
+  }
+  pid_ = s.pid;
+  state_->outFd = s.outFd;
+  State* state = state_;
+  // Drains the output until its end, or shortly after stop() (a process that escaped the group
+  // could hold the pipe open forever).
+  state_->drainer = std::thread([state] {
+    Clock::time_point graceEnd{};
+    for (;;) {
+      pollfd pfd{state->outFd, POLLIN, 0};
+      poll(&pfd, 1, 50);
+      if (!readSome(state->outFd, state->sink)) break;
+      if (state->stopping.load()) {
+        if (graceEnd == Clock::time_point{})
+          graceEnd = Clock::now() + std::chrono::milliseconds(300);
+        if (Clock::now() >= graceEnd) break;
+      }
+    }
+  });
+}
+
+SandboxedProcess::~SandboxedProcess() {
+  stop();
+  delete state_;
+}
+
+bool SandboxedProcess::alive() {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  return !state_->stopped && pid_ > 0 && !hasEnded(pid_);
+}
+
+std::string SandboxedProcess::output() const { return state_->sink.text(); }
+
+const std::vector<std::string>& SandboxedProcess::notes() const { return state_->notes; }
+
+Exit SandboxedProcess::stop() {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  if (state_->stopped) return state_->exit;
+  state_->stopped = true;
+  const int status = killAndReap(pid_);
+  state_->stopping = true;
+  if (state_->drainer.joinable()) state_->drainer.join();
+  ::close(state_->outFd);
+  state_->outFd = -1;
+  Exit& exit = state_->exit;
+  setEnding(exit, status);
+  exit.output = state_->sink.text();
+  exit.outputTruncated = state_->sink.truncated;
+  exit.wallSeconds = secondsSince(state_->begin);
+  exit.notes = state_->notes;
+  if (state_->removeWorkDir) deleteWorkDir(state_->workDir);
+  return exit;
+}
+
+}  // namespace a6::grader

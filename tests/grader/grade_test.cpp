@@ -1,0 +1,222 @@
+// a6_grade end to end: the command line, a bad rubric, and whole submissions (the solution gets
+// full marks, the starter nothing, a broken task costs that task only), graded twice the same.
+//
+// Each case is its own ctest entry (--gtest_filter), so they run in parallel.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct Outcome {
+  int status = -1;
+  std::string output;  // stdout and stderr
+};
+
+Outcome run(const std::string& command) {
+  Outcome r;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) return r;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
+  const int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return r;
+}
+
+// A fresh output folder for one case, inside the build tree (ctest's working directory).
+fs::path outDir(const std::string& name) {
+  const fs::path dir = fs::absolute("grade_test_out") / name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string readAll(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+json results(const fs::path& out) {
+  const std::string text = readAll(out / "results.json");
+  EXPECT_FALSE(text.empty()) << "no results.json in " << out;
+  return json::parse(text, nullptr, false);
+}
+
+Outcome grade(const fs::path& submission, const fs::path& out, const std::string& extra = "") {
+  return run(std::string(A6_GRADE_COMMAND) + " '" + submission.string() + "' --out '" +
+             out.string() + "' --quiet --seed 7 " + extra);
+}
+
+const json* item(const json& r, const std::string& prefix) {
+  for (const json& t : r["tests"]) {
+    if (t["name"].get<std::string>().rfind(prefix, 0) == 0) return &t;
+  }
+  ADD_FAILURE() << "no item named " << prefix << "... in " << r.dump(2);
+  return nullptr;
+}
+
+TEST(GradeCommand, ABadCommandLineExitsWith2) {
+  EXPECT_EQ(run(A6_GRADE_COMMAND).status, 2);
+  EXPECT_EQ(run(std::string(A6_GRADE_COMMAND) + " --no-such-option").status, 2);
+  const Outcome help = run(std::string(A6_GRADE_COMMAND) + " --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.output.find("--rubric"), std::string::npos) << help.output;
+}
+
+TEST(GradeCommand, ABadRubricStillWritesResultsWithTheError) {
+  const fs::path out = outDir("bad_rubric");
+  fs::create_directories(out);
+  std::ofstream(out / "bad.toml")
+      << "total = 10\n[[item]]\nname = \"a\"\ntests = \"*\"\npoint = 10\n";
+  const Outcome r =
+      grade(A6_SOURCE_DIR "/solution", out, "--rubric '" + (out / "bad.toml").string() + "'");
+  EXPECT_EQ(r.status, 1) << r.output;
+  const json j = results(out);
+  EXPECT_EQ(j["score"], 0);
+  const std::string output = j["output"];
+  EXPECT_NE(output.find("the rubric is invalid"), std::string::npos) << output;
+  EXPECT_NE(output.find("bad.toml:5: unknown key &#39;point&#39;"), std::string::npos) << output;
+  EXPECT_TRUE(fs::exists(out / "report.html"));
+}
+
+TEST(GradeCommand, AMissingSubmissionScoresZeroWithAReason) {
+  const fs::path out = outDir("missing");
+  const Outcome r = grade("/nonexistent/submission.zip", out);
+  EXPECT_EQ(r.status, 0) << "grading completed: the submission is the problem\n" << r.output;
+  const json j = results(out);
+  EXPECT_EQ(j["score"], 0);
+  EXPECT_NE(j["output"].get<std::string>().find("could not be read"), std::string::npos) << j;
+}
+
+TEST(GradeSubmission, TheSolutionGetsFullMarksAndTheExtraCredit) {
+  const fs::path out = outDir("solution");
+  const Outcome r = grade(A6_SOURCE_DIR "/solution", out);
+  EXPECT_EQ(r.status, 0) << r.output;
+  const json j = results(out);
+  EXPECT_EQ(j["extra_data"]["max_score"], 100);
+  EXPECT_GT(j["extra_data"]["extra_credit"].get<double>(), 0);
+  EXPECT_EQ(j["score"].get<double>(), 100 + j["extra_data"]["extra_credit"].get<double>())
+      << r.output;
+  for (const json& t : j["tests"]) EXPECT_EQ(t["status"], "passed") << t;
+  EXPECT_EQ(j["extra_data"]["seed"], "7");
+  EXPECT_NE(r.output.find("total"), std::string::npos) << "the summary on stdout";
+  EXPECT_TRUE(fs::exists(out / "report.html"));
+}
+
+TEST(GradeSubmission, TheStarterGetsNothing) {
+  const fs::path out = outDir("starter");
+  const Outcome r = grade(A6_SOURCE_DIR "/starter", out);
+  EXPECT_EQ(r.status, 0) << r.output;
+  const json j = results(out);
+  EXPECT_EQ(j["score"], 0) << r.output;
+  for (const json& t : j["tests"]) {
+    // Items worth points fail; the 0-point sanity items hold what a stub passes.
+    if (t["max_score"] > 0) {
+      EXPECT_EQ(t["status"], "failed") << t;
+    }
+    EXPECT_EQ(t["score"], 0) << t;
+  }
+}
+
+TEST(GradeSubmission, ABrokenTaskCostsThatTaskOnlyAndItsMessagesAreEscaped) {
+  const fs::path out = outDir("broken_cloth");
+  const fs::path submission = out.parent_path() / "broken_cloth_submission";
+  fs::remove_all(submission);
+  fs::create_directories(submission);
+  for (const char* file :
+       {"spring.cpp", "forces.cpp", "time_stepping.cpp", "particle_system.cpp", "joints.cpp"}) {
+    fs::copy_file(fs::path(A6_SOURCE_DIR "/solution") / file, submission / file);
+  }
+  std::ofstream(submission / "cloth.cpp") << "#include \"a6/cloth.h\"\n"
+                                             "#error <script>alert(1)</script>\n";
+  const Outcome r = grade(submission, out);
+  EXPECT_EQ(r.status, 0) << r.output;
+  const json j = results(out);
+  const json* cloth = item(j, "Task 4: cloth");
+  ASSERT_NE(cloth, nullptr);
+  EXPECT_EQ((*cloth)["score"], 0);
+  const std::string output = (*cloth)["output"];
+  EXPECT_NE(output.find("cloth.cpp did not compile: graded with the starter code"),
+            std::string::npos)
+      << output;
+  EXPECT_NE(output.find("alert(1)"), std::string::npos) << "the compiler's message is shown";
+  for (const char* other : {"Task 1:", "Task 2:", "Task 5:", "Task 6: joints"}) {
+    const json* t = item(j, other);
+    ASSERT_NE(t, nullptr);
+    EXPECT_EQ((*t)["score"], (*t)["max_score"]) << other << " must not pay for task 4";
+  }
+  const std::string html = readAll(out / "report.html");
+  EXPECT_EQ(html.find("<script>alert(1)"), std::string::npos);
+  EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+}
+
+TEST(GradeSubmission, AnEndlessLoopCostsItsChecksOnlyWithinTheTimeLimit) {
+  const fs::path out = outDir("endless_loop");
+  const fs::path submission = out.parent_path() / "endless_loop_submission";
+  fs::remove_all(submission);
+  fs::create_directories(submission);
+  for (const char* file :
+       {"forces.cpp", "time_stepping.cpp", "cloth.cpp", "particle_system.cpp", "joints.cpp"}) {
+    fs::copy_file(fs::path(A6_SOURCE_DIR "/solution") / file, submission / file);
+  }
+  std::ofstream(submission / "spring.cpp") << "#include \"a6/spring.h\"\n"
+                                              "namespace a6 {\n"
+                                              "Vec2 Spring::computeForce() const {\n"
+                                              "  for (volatile long i = 0;; ++i) {}\n"
+                                              "}\n"
+                                              "}  // namespace a6\n";
+  // The default rubric with half a second per check.
+  std::string rubric = readAll(A6_SOURCE_DIR "/grader/rubric.toml");
+  const std::size_t at = rubric.find("time_limit = 10\n");
+  ASSERT_NE(at, std::string::npos);
+  rubric.replace(at, 15, "time_limit = 0.5");
+  fs::create_directories(out.parent_path());
+  std::ofstream(out.parent_path() / "fast_rubric.toml") << rubric;
+
+  const auto start = std::chrono::steady_clock::now();
+  const Outcome r = grade(submission, out,
+                          "--rubric '" + (out.parent_path() / "fast_rubric.toml").string() + "'");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_LT(seconds, 120) << "14 checks of half a second each, and the rest";
+  const json j = results(out);
+  const json* spring = item(j, "Task 1: spring force");
+  ASSERT_NE(spring, nullptr);
+  EXPECT_EQ((*spring)["score"], 0);
+  EXPECT_NE((*spring)["output"].get<std::string>().find("time limit of 0.5 s"), std::string::npos)
+      << (*spring)["output"];
+  for (const char* other : {"Task 2: forces", "Task 3: time stepping", "Task 4: cloth",
+                            "Task 5: particle system", "Task 6: joints"}) {
+    const json* t = item(j, other);
+    ASSERT_NE(t, nullptr);
+    EXPECT_EQ((*t)["score"], (*t)["max_score"]) << other << " must not pay for task 1";
+  }
+}
+
+TEST(GradeSubmission, GradingTwiceGivesTheSameResults) {
+  const fs::path a = outDir("twice_a"), b = outDir("twice_b");
+  ASSERT_EQ(grade(A6_SOURCE_DIR "/solution", a).status, 0);
+  ASSERT_EQ(grade(A6_SOURCE_DIR "/solution", b).status, 0);
+  json ja = results(a), jb = results(b);
+  for (json* j : {&ja, &jb}) {
+    j->erase("execution_time");
+    (*j)["extra_data"].erase("seconds");
+  }
+  EXPECT_EQ(ja.dump(2), jb.dump(2));
+}
+
+}  // namespace

@@ -1,0 +1,341 @@
+// The ProbeClient (grader/probe_client.h) against real probes: the solution's (answers bit for bit
+// as in-process code does) and a hostile one (fixtures/probe_hostile/spring.cpp: crashes, loops,
+// NaN, system calls, garbage on the answer pipe). A failure costs only its own request.
+#include "probe_client.h"
+
+#include <gtest/gtest.h>
+#include <sched.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "harness/wire.h"
+
+namespace {
+#include "reference_models.inc"
+}  // namespace
+
+namespace a6::grader {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+const fs::path kSolution = A6_PROBE_SOLUTION;
+const fs::path kHostile = A6_PROBE_HOSTILE;
+
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+class TempDir {
+ public:
+  TempDir() {
+    char name[] = "/tmp/a6-probe-test-XXXXXX";
+    path_ = mkdtemp(name);
+    chmod(path_.c_str(), 0755);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+harness::SpringForceRequest spring(double ks) {
+  harness::SpringForceRequest r;
+  r.p1.x = Vec2(0, 0);
+  r.p2.x = Vec2(2, 0);
+  r.restLength = 1;
+  r.ks = ks;
+  return r;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// ---- the solution's probe answers exactly as the in-process code does
+// ----------------------------
+
+TEST(ProbeClient, TheSolutionsProbeAnswersBitForBitAsInProcess) {
+  TempDir tmp;
+  ProbeClient probe(kSolution, tmp.path() / "run", Limits{});
+  auto local = harness::makeInProcess(referenceForceModel());
+  auto same = [](const auto& viaProbe, const auto& inProcess, const char* what) {
+    EXPECT_TRUE(viaProbe.ok()) << what << ": " << viaProbe.error;
+    EXPECT_EQ(wire::dump(wire::encodeResult(viaProbe)), wire::dump(wire::encodeResult(inProcess)))
+        << what;
+  };
+  same(probe.springForce(spring(50)), local->springForce(spring(50)), "springForce");
+
+  harness::ForcesRequest forces;
+  forces.particle.v = Vec2(0.5, -2);
+  forces.particle.temperature = 500;
+  forces.env.drag = 0.3;
+  forces.env.buoyancy = 0.01;
+  forces.env.repulsion = 1000;
+  forces.env.planes.push_back(HalfPlane{});
+  forces.contact.depth = 0.01;
+  same(probe.forces(forces), local->forces(forces), "forces");
+
+  harness::SimulateRequest sim;
+  sim.particles.resize(3);
+  sim.particles[0].pinned = true;
+  sim.particles[1].x = Vec2(0.5, 0);
+  sim.particles[2].x = Vec2(1, 0.1);
+  sim.springs = {{0, 1, 0.5, 100, 0.5, SpringType::Structural},
+                 {1, 2, 0.5, 100, 0.5, SpringType::Structural}};
+  sim.frames = 120;
+  sim.substeps = 4;
+  sim.recordEvery = 7;
+  sim.referenceForces = true;
+  same(probe.simulate(sim), local->simulate(sim), "simulate");
+
+  ClothSpec cloth;
+  cloth.n = 6;
+  cloth.bending = true;
+  same(probe.buildCloth(cloth), local->buildCloth(cloth), "buildCloth");
+
+  harness::EmitRequest emit;
+  emit.seed = 77;
+  emit.count = 500;
+  same(probe.emit(emit), local->emit(emit), "emit");
+
+  harness::ParticleRunRequest run;
+  run.seed = 5;
+  run.steps = 90;
+  run.dt = 1.0 / 64;
+  run.referenceForces = true;
+  same(probe.runParticles(run), local->runParticles(run), "runParticles");
+
+  harness::Box2DRequest box;
+  box.scene = "mouse_drag";
+  box.steps = 60;
+  box.drag = {{harness::DragEvent::Kind::Begin, 5, Vec2(0.5, 1)},
+              {harness::DragEvent::Kind::Move, 20, Vec2(1, 2)},
+              {harness::DragEvent::Kind::End, 40, Vec2(1, 2)}};
+  same(probe.runBox2D(box), local->runBox2D(box), "runBox2D");
+  box.scene = "car";
+  box.drag.clear();
+  same(probe.runBox2D(box), local->runBox2D(box), "runBox2D car");
+
+  harness::SceneRequest scene;
+  scene.scene = "cloth_shear";
+  scene.frames = {0, 30, 10};
+  same(probe.runScene(scene), local->runScene(scene), "runScene cloth");
+  scene.scene = "bridge";
+  same(probe.runScene(scene), local->runScene(scene), "runScene bridge");
+  scene.scene = "fire";
+  same(probe.runScene(scene), local->runScene(scene), "runScene fire");
+
+  EXPECT_EQ(probe.starts(), 1) << "one probe served every request";
+}
+
+TEST(ProbeClient, PerRequestOverheadIsSmall) {
+  TempDir tmp;
+  ProbeClient probe(kSolution, tmp.path() / "run", Limits{});
+  auto local = harness::makeInProcess(referenceForceModel());
+  ASSERT_TRUE(probe.springForce(spring(10)).ok());  // started and warm
+  constexpr int kRequests = 2000;
+  auto t0 = Clock::now();
+  for (int k = 0; k < kRequests; ++k) ASSERT_TRUE(probe.springForce(spring(k)).ok());
+  const double viaProbe = since(t0) / kRequests;
+  t0 = Clock::now();
+  for (int k = 0; k < kRequests; ++k) ASSERT_TRUE(local->springForce(spring(k)).ok());
+  const double inProcess = since(t0) / kRequests;
+  // A larger request: a 30x30 cloth (961 particles, ~3500 springs) there and back.
+  ClothSpec cloth;
+  cloth.n = 30;
+  t0 = Clock::now();
+  for (int k = 0; k < 20; ++k) ASSERT_TRUE(probe.buildCloth(cloth).ok());
+  const double clothViaProbe = since(t0) / 20;
+  t0 = Clock::now();
+  for (int k = 0; k < 20; ++k) ASSERT_TRUE(local->buildCloth(cloth).ok());
+  const double clothInProcess = since(t0) / 20;
+  // A fresh probe: start-up plus the first request.
+  TempDir tmp2;
+  ProbeClient fresh(kSolution, tmp2.path() / "run", Limits{});
+  t0 = Clock::now();
+  ASSERT_TRUE(fresh.springForce(spring(1)).ok());
+  const double firstRequest = since(t0);
+  std::printf("[ overhead ] springForce: %.1f us via the probe, %.3f us in process\n",
+              viaProbe * 1e6, inProcess * 1e6);
+  std::printf("[ overhead ] buildCloth n=30: %.2f ms via the probe, %.2f ms in process\n",
+              clothViaProbe * 1e3, clothInProcess * 1e3);
+  std::printf("[ overhead ] starting a probe and its first request: %.1f ms\n", firstRequest * 1e3);
+  EXPECT_LT(viaProbe, 2e-3) << "a round trip should take well under 2 ms";
+  EXPECT_LT(firstRequest, 2.0);
+}
+
+// ---- a hostile probe: each failure costs its own request only
+// --------------------------------------------
+
+class HostileProbe : public ::testing::Test {
+ protected:
+  TempDir tmp;
+  ProbeClient probe{kHostile, tmp.path() / "run", Limits{}};
+  void expectHealthy() {
+    const auto r = probe.springForce(spring(10));
+    EXPECT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.force, Vec2(-10, 0));
+  }
+};
+
+TEST_F(HostileProbe, ACrashFailsItsRequestAndTheNextOneGetsAFreshProbe) {
+  expectHealthy();
+  EXPECT_EQ(probe.starts(), 1);
+  const auto r = probe.springForce(spring(13));
+  EXPECT_EQ(r.error, "the probe crashed: killed by SIGSEGV (segmentation fault)");
+  expectHealthy();
+  EXPECT_EQ(probe.starts(), 2);
+  EXPECT_FALSE(fs::exists(tmp.path() / "run" / "probe-1")) << "the dead probe's work dir is gone";
+  EXPECT_TRUE(fs::exists(tmp.path() / "run" / "probe-2"));
+}
+
+TEST_F(HostileProbe, ACrashReportEndsWithTheLastLinesItPrinted) {
+  const auto r = probe.springForce(spring(23));
+  EXPECT_TRUE(contains(r.error, "killed by SIGSEGV")) << r.error;
+  EXPECT_TRUE(contains(r.error, "the last lines it printed:\nabout to crash, said the spring"))
+      << r.error;
+  EXPECT_TRUE(contains(probe.output(), "about to crash, said the spring"));
+  EXPECT_TRUE(contains(probe.output(), "[a6: probe 1 crashed: killed by SIGSEGV"));
+}
+
+TEST_F(HostileProbe, AnInfiniteLoopTimesOutWithinTheLimitAndTheNextRequestWorks) {
+  probe.setRequestTimeout(1.0);
+  const auto t0 = Clock::now();
+  const auto r = probe.springForce(spring(14));
+  const double took = since(t0);
+  EXPECT_EQ(r.error,
+            "your code took longer than 1 s on this request (the time limit), so it was "
+            "stopped");
+  EXPECT_GE(took, 1.0);
+  EXPECT_LT(took, 1.5) << "reported late";
+  expectHealthy();
+}
+
+TEST_F(HostileProbe, NaNAndNegativeZeroComeBackAsThemselves) {
+  const auto r = probe.springForce(spring(15));
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_TRUE(std::isnan(r.force.x()));
+  EXPECT_TRUE(r.force.y() == 0 && std::signbit(r.force.y()));
+}
+
+TEST_F(HostileProbe, FilesSocketsProcessesThreadsAndExecutableMemoryAreRefused) {
+  const auto r = probe.springForce(spring(16));
+  EXPECT_FALSE(contains(r.error, "succeeded")) << r.error;
+  for (const char* what :
+       {"fopen(/etc/passwd): failed", "fopen(scratch.txt, w): failed", "socket: failed",
+        "fork: failed", "thread: failed", "mmap(PROT_EXEC): failed"}) {
+    EXPECT_TRUE(contains(r.error, what)) << what << " in: " << r.error;
+  }
+  EXPECT_EQ(probe.starts(), 1) << "a refused system call is not a crash";
+  expectHealthy();
+}
+
+TEST_F(HostileProbe, PrintingALotIsCappedAndHarmless) {
+  const auto r = probe.springForce(spring(17));
+  EXPECT_TRUE(r.ok()) << r.error;
+  // The output is drained by another thread: give it a moment.
+  std::string out = probe.output();
+  for (const auto t0 = Clock::now(); out.size() < Limits{}.outputBytes && since(t0) < 5;) {
+    usleep(10000);
+    out = probe.output();
+  }
+  EXPECT_LE(out.size(), Limits{}.outputBytes);
+  EXPECT_GT(out.size(), Limits{}.outputBytes / 2);
+  expectHealthy();
+}
+
+TEST_F(HostileProbe, AbortAndExceptionsAndExitAreReportedAsSuch) {
+  EXPECT_TRUE(contains(probe.springForce(spring(18)).error, "killed by SIGABRT")) << "abort()";
+  EXPECT_EQ(probe.springForce(spring(19)).error, "exception: the hostile spring throws");
+  const int before = probe.starts();
+  expectHealthy();
+  EXPECT_EQ(probe.starts(), before) << "an exception does not cost the probe";
+  EXPECT_EQ(probe.springForce(spring(21)).error, "the probe crashed: exited with 0");
+  expectHealthy();
+}
+
+TEST_F(HostileProbe, GarbageOnTheAnswerPipeFailsTheRequestOnly) {
+  const auto r = probe.springForce(spring(20));
+  EXPECT_EQ(r.error.rfind("garbage from the probe: not JSON", 0), 0u) << r.error;
+  expectHealthy();
+  const auto big = probe.springForce(spring(22));
+  EXPECT_EQ(big.error.rfind("garbage from the probe: an answer of 1073741824 bytes announced", 0),
+            0u)
+      << big.error;
+  expectHealthy();
+  EXPECT_EQ(probe.starts(), 3);
+}
+
+TEST_F(HostileProbe, TheMemoryLimitMakesAHugeAllocationFail) {
+  const auto r = probe.springForce(spring(24));
+  EXPECT_TRUE(contains(r.error, "bad_alloc")) << r.error;
+}
+
+TEST_F(HostileProbe, AfterTooManyStartsRequestsFailAtOnce) {
+  probe.setMaxStarts(3);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_TRUE(contains(probe.springForce(spring(13)).error, "SIGSEGV"));
+  }
+  const auto t0 = Clock::now();
+  const auto r = probe.springForce(spring(10));
+  EXPECT_LT(since(t0), 0.05);
+  EXPECT_EQ(r.error,
+            "the probe was started 3 times (it crashed or ran out of time each time); the "
+            "remaining requests were not run");
+  EXPECT_EQ(probe.starts(), 3);
+}
+
+TEST(ProbeClient, AMissingProbeFailsEveryRequestWithTheReason) {
+  TempDir tmp;
+  ProbeClient probe(tmp.path() / "nothing-here", tmp.path() / "run", Limits{});
+  const auto r = probe.emit(harness::EmitRequest{});
+  EXPECT_TRUE(contains(r.error, "could not start the probe: exec ")) << r.error;
+  EXPECT_TRUE(contains(r.error, "No such file or directory")) << r.error;
+}
+
+TEST(ProbeClient, AProbeThatDiesBeforeReadingNeverTakesTheGraderWithIt) {
+  // /bin/true ends at once: large requests meet a closed pipe (EPIPE, no SIGPIPE death).
+  TempDir tmp;
+  ProbeClient probe("/bin/true", tmp.path() / "run", Limits{});
+  harness::SimulateRequest big;
+  big.particles.resize(20000);
+  for (int k = 0; k < 5; ++k) {
+    const auto r = probe.simulate(big);
+    EXPECT_EQ(r.error, "the probe crashed: exited with 0");
+  }
+  EXPECT_EQ(probe.starts(), 5);
+}
+
+TEST(ProbeClient, AsRootItsProtectionsApplyWithoutNotes) {
+  if (geteuid() != 0) GTEST_SKIP() << "not root: privileges and namespaces are not available";
+  const pid_t pid = fork();
+  if (pid == 0) _exit(unshare(CLONE_NEWNS | CLONE_NEWNET) == 0 ? 0 : 1);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    GTEST_SKIP() << "this machine refuses namespaces even to root (a container?)";
+  }
+  TempDir tmp;
+  ProbeClient probe(kSolution, tmp.path() / "run", Limits{});
+  probe.setHidden({tmp.path() / "secret"});
+  fs::create_directories(tmp.path() / "secret");
+  EXPECT_TRUE(probe.springForce(spring(1)).ok());
+  for (const std::string& note : probe.notes()) ADD_FAILURE() << note;
+}
+
+}  // namespace
+}  // namespace a6::grader

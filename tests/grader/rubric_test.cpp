@@ -1,0 +1,312 @@
+// The rubric: its format, every kind of error with its message and line, the first-match rule,
+// and the default rubric's coverage of the suite the grader runs.
+#include "rubric.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace a6::grader {
+namespace {
+
+const char* const kGood = R"(title = "A6"
+total = 20
+time_limit = 7
+
+[[item]]
+name = "Task 1: spring"
+task = 1
+tests = "Task1Spring.*"
+points = 10
+
+[[item]]
+name = "Task 4 extra"
+task = 4
+tests = ["Task4Cloth.Bending*", "Task4Cloth.Extra?"]
+points = 2.5
+extra_credit = true
+visibility = "after_due_date"
+all_or_nothing = true
+time_limit = 30
+
+[[item]]
+name = "Task 4: cloth"
+task = 4
+tests = "Task4Cloth.*"
+points = 10
+visibility = "hidden"
+)";
+
+// The rubric's error, or a failure when it parsed.
+std::string errorOf(const std::string& text) {
+  const Rubric r = parseRubric(text, "r.toml");
+  EXPECT_FALSE(r.ok()) << "this rubric should have been refused:\n" << text;
+  return r.error;
+}
+
+// Runs a command and returns its standard output.
+std::string run(const std::string& command, int* status) {
+  std::string output;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return output;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, n);
+  const int raw = pclose(pipe);
+  *status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return output;
+}
+
+TEST(Glob, MatchesStarsAndQuestionMarksOverTheWholeName) {
+  EXPECT_TRUE(globMatch("Task1Spring.*", "Task1Spring.AtRest"));
+  EXPECT_TRUE(globMatch("*", ""));
+  EXPECT_TRUE(globMatch("Task?Cloth.*Bend*", "Task4Cloth.ShearAndBendingFlags"));
+  EXPECT_TRUE(globMatch("a*b*c", "aXXbYYbZc"));
+  EXPECT_FALSE(globMatch("Task1Spring.*", "Task1SpringX.AtRest"));
+  EXPECT_FALSE(globMatch("Task4Cloth.Bending*", "Task4Cloth.ShearAndBendingFlags"));
+  EXPECT_FALSE(globMatch("Task1Spring", "Task1Spring.AtRest"));  // whole name, not a prefix
+  EXPECT_FALSE(globMatch("?", ""));
+}
+
+TEST(Rubric, ReadsEveryFieldOfAGoodFile) {
+  const Rubric r = parseRubric(kGood, "good.toml");
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(r.title, "A6");
+  EXPECT_EQ(r.totalPoints, 20);
+  ASSERT_EQ(r.items.size(), 3u);
+  const RubricItem& first = r.items[0];
+  EXPECT_EQ(first.name, "Task 1: spring");
+  EXPECT_EQ(first.task, 1);
+  EXPECT_EQ(first.tests, std::vector<std::string>{"Task1Spring.*"});
+  EXPECT_EQ(first.points, 10);
+  EXPECT_FALSE(first.allOrNothing);
+  EXPECT_FALSE(first.extraCredit);
+  EXPECT_EQ(first.visibility, Visibility::Visible);
+  EXPECT_EQ(first.timeLimitSeconds, 7) << "the top-level time_limit is every item's default";
+  EXPECT_EQ(first.line, 5);
+  const RubricItem& extra = r.items[1];
+  EXPECT_EQ(extra.tests.size(), 2u);
+  EXPECT_EQ(extra.points, 2.5);
+  EXPECT_TRUE(extra.extraCredit);
+  EXPECT_TRUE(extra.allOrNothing);
+  EXPECT_EQ(extra.visibility, Visibility::AfterDueDate);
+  EXPECT_EQ(extra.timeLimitSeconds, 30);
+  EXPECT_EQ(r.items[2].visibility, Visibility::Hidden);
+}
+
+TEST(Rubric, ATestCountsForTheFirstItemThatMatchesIt) {
+  const Rubric r = parseRubric(kGood, "good.toml");
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(r.itemFor("Task4Cloth.BendingSpringsSkipOneParticle"), 1);
+  EXPECT_EQ(r.itemFor("Task4Cloth.ExtraA"), 1);
+  EXPECT_EQ(r.itemFor("Task4Cloth.ParticleCount"), 2);
+  EXPECT_EQ(r.itemFor("Task1Spring.AtRest"), 0);
+  EXPECT_EQ(r.itemFor("Task2Forces.Gravity"), -1);
+  EXPECT_TRUE(r.items[2].matches("Task4Cloth.BendingSpringsSkipOneParticle"))
+      << "the broad item matches too: only the first counts";
+}
+
+TEST(Rubric, VisibilityNamesAreGradescopes) {
+  EXPECT_STREQ(toString(Visibility::Visible), "visible");
+  EXPECT_STREQ(toString(Visibility::Hidden), "hidden");
+  EXPECT_STREQ(toString(Visibility::AfterDueDate), "after_due_date");
+  EXPECT_STREQ(toString(Visibility::AfterPublished), "after_published");
+}
+
+TEST(RubricErrors, AMisspeltKeyIsCaughtWithItsLineAndASuggestion) {
+  const std::string e =
+      errorOf("total = 5\n\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoint = 5\npoints = 5\n");
+  EXPECT_NE(e.find("r.toml:6:"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown key 'point'"), std::string::npos) << e;
+  EXPECT_NE(e.find("did you mean 'points'?"), std::string::npos) << e;
+}
+
+TEST(RubricErrors, AMisspeltTopLevelKeyIsCaught) {
+  const std::string e =
+      errorOf("totl = 5\ntotal = 5\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = 5\n");
+  EXPECT_NE(e.find("r.toml:1: unknown top-level key 'totl' (did you mean 'total'?)"),
+            std::string::npos)
+      << e;
+}
+
+TEST(RubricErrors, AWrongTypeNamesTheKeyTheItemAndTheLine) {
+  const std::string e =
+      errorOf("total = 5\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = \"five\"\n");
+  EXPECT_NE(e.find("r.toml:5: 'points' of [[item]] 1 must be a number, not a string"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(errorOf("total = 5\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = 5\n"
+                    "extra_credit = \"yes\"\n")
+                .find("r.toml:6: 'extra_credit' of [[item]] 1 must be true or false"),
+            std::string::npos);
+  EXPECT_NE(errorOf("total = 5\n[[item]]\nname = \"a\"\ntests = 3\npoints = 5\n")
+                .find("r.toml:4: 'tests' of [[item]] 1 must be a glob string or a list"),
+            std::string::npos);
+  EXPECT_NE(errorOf("total = 5\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = 5\n"
+                    "task = 1.5\n")
+                .find("'task' of [[item]] 1 must be an integer, not a number"),
+            std::string::npos);
+}
+
+TEST(RubricErrors, NegativePointsAreRefused) {
+  const std::string e =
+      errorOf("total = -2\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = -2\n");
+  EXPECT_NE(e.find("r.toml:5: 'points' of [[item]] 1 is negative"), std::string::npos) << e;
+}
+
+TEST(RubricErrors, AnUnknownVisibilityListsTheValidOnes) {
+  const std::string e = errorOf(
+      "total = 5\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = 5\nvisibility = \"secret\"\n");
+  EXPECT_NE(e.find("r.toml:6: 'visibility' of [[item]] 1 is 'secret': use one of visible, "
+                   "hidden, after_due_date, after_published"),
+            std::string::npos)
+      << e;
+}
+
+TEST(RubricErrors, TheTotalMustBeTheSumOfTheRegularPoints) {
+  const std::string e = errorOf(
+      "total = 100\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = 60\n"
+      "[[item]]\nname = \"b\"\ntests = \"B.*\"\npoints = 30\n"
+      "[[item]]\nname = \"c\"\ntests = \"C.*\"\npoints = 10\nextra_credit = true\n");
+  EXPECT_NE(e.find("r.toml:1: total = 100 but the items' points add up to 90 (extra credit not "
+                   "counted)"),
+            std::string::npos)
+      << e;
+}
+
+TEST(RubricErrors, RequiredKeysAreNamed) {
+  const std::string e = errorOf("total = 0\n[[item]]\ntask = 1\n");
+  EXPECT_NE(e.find("r.toml:2: [[item]] 1 has no 'name'"), std::string::npos) << e;
+  EXPECT_NE(e.find("[[item]] 1 has no 'tests'"), std::string::npos) << e;
+  EXPECT_NE(e.find("[[item]] 1 has no 'points'"), std::string::npos) << e;
+  EXPECT_NE(errorOf("[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = 1\n").find("no 'total'"),
+            std::string::npos);
+  EXPECT_NE(errorOf("total = 0\n").find("no [[item]]"), std::string::npos);
+}
+
+TEST(RubricErrors, OutOfRangeValuesAreRefused) {
+  const std::string base = "total = 5\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = 5\n";
+  EXPECT_NE(errorOf(base + "task = 7\n").find("'task' of [[item]] 1 must be 1..6, or 0"),
+            std::string::npos);
+  EXPECT_NE(errorOf(base + "time_limit = 0\n")
+                .find("'time_limit' of [[item]] 1 must be more "
+                      "than 0"),
+            std::string::npos);
+  EXPECT_NE(errorOf("total = 5\n[[item]]\nname = \"a\"\ntests = []\npoints = 5\n")
+                .find("[[item]] 1 has an empty 'tests' list"),
+            std::string::npos);
+}
+
+TEST(RubricErrors, DuplicateItemNamesAreRefused) {
+  const std::string e = errorOf(
+      "total = 2\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = 1\n"
+      "[[item]]\nname = \"a\"\ntests = \"B.*\"\npoints = 1\n");
+  EXPECT_NE(e.find("r.toml:6: two items are named 'a'"), std::string::npos) << e;
+}
+
+TEST(RubricErrors, InvalidTomlGivesTheParsersLine) {
+  const std::string e = errorOf("total = 5\n\n[[item]\nname = \"a\"\n");
+  EXPECT_NE(e.find("r.toml:3: not valid TOML"), std::string::npos) << e;
+}
+
+TEST(RubricErrors, EveryProblemIsReportedAtOnce) {
+  const std::string e = errorOf(
+      "total = 5\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoint = 5\nvisibility = \"x\"\n");
+  EXPECT_NE(e.find("unknown key 'point'"), std::string::npos) << e;
+  EXPECT_NE(e.find("'visibility' of [[item]] 1 is 'x'"), std::string::npos) << e;
+  EXPECT_NE(e.find("has no 'points'"), std::string::npos) << e;
+}
+
+TEST(RubricErrors, AMissingFileSaysSo) {
+  const Rubric r = loadRubric("/nonexistent/rubric.toml");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.error.find("/nonexistent/rubric.toml: cannot read the rubric file"),
+            std::string::npos)
+      << r.error;
+}
+
+// The default rubric against the checks the grader really runs (a6_grade --list-tests) -----------
+
+TEST(DefaultRubric, LoadsAndTotalsExactly100) {
+  const Rubric r = loadRubric(A6_DEFAULT_RUBRIC);
+  ASSERT_TRUE(r.ok()) << r.error;
+  EXPECT_EQ(r.totalPoints, 100);
+  double regular = 0, extra = 0;
+  std::set<int> tasks;
+  for (const RubricItem& item : r.items) {
+    (item.extraCredit ? extra : regular) += item.points;
+    tasks.insert(item.task);
+  }
+  EXPECT_EQ(regular, 100);
+  EXPECT_GT(extra, 0) << "the default rubric shows extra credit (bending springs)";
+  EXPECT_EQ(tasks, (std::set<int>{1, 2, 3, 4, 5, 6}));
+  bool delayed = false;
+  for (const RubricItem& item : r.items)
+    delayed = delayed || item.visibility != Visibility::Visible;
+  EXPECT_TRUE(delayed) << "the default rubric shows delayed visibility";
+}
+
+#if defined(A6_GRADE_COMMAND) && defined(A6_TESTS_COMMAND)
+// The physics suite's test names, from a6_tests --gtest_list_tests ("Suite.\n  Test\n").
+std::vector<std::string> physicsTests() {
+  int status = 0;
+  const std::string text = run(std::string(A6_TESTS_COMMAND) + " --gtest_list_tests", &status);
+  EXPECT_EQ(status, 0);
+  std::vector<std::string> names;
+  std::string suite, line;
+  std::istringstream in(text);
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    if (line[0] != ' ') {
+      suite = line.substr(0, line.find('.') + 1);
+    } else {
+      const std::size_t begin = line.find_first_not_of(' ');
+      names.push_back(suite + line.substr(begin, line.find_first_of(" #", begin) - begin));
+    }
+  }
+  return names;
+}
+
+TEST(DefaultRubric, CountsEveryCheckTheGraderRunsExactlyOnce) {
+  int status = 0;
+  const std::string text = run(std::string(A6_GRADE_COMMAND) + " --list-tests", &status);
+  EXPECT_EQ(status, 0) << "a6_grade --list-tests says some check or item is unmatched:\n" << text;
+  std::vector<std::string> graded;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) graded.push_back(line.substr(0, line.find('\t')));
+  ASSERT_GT(graded.size(), 90u) << text;
+
+  const Rubric r = loadRubric(A6_DEFAULT_RUBRIC);
+  ASSERT_TRUE(r.ok()) << r.error;
+  std::vector<int> perItem(r.items.size(), 0);
+  std::set<std::string> seen;
+  for (const std::string& name : graded) {
+    EXPECT_TRUE(seen.insert(name).second) << name << " is listed twice";
+    const int item = r.itemFor(name);
+    ASSERT_GE(item, 0) << name << " is matched by no rubric item";
+    ++perItem[static_cast<std::size_t>(item)];
+  }
+  for (std::size_t i = 0; i < r.items.size(); ++i) {
+    EXPECT_GT(perItem[i], 0) << "rubric item '" << r.items[i].name << "' matches no check";
+  }
+  // Every check of the physics suite is among them.
+  for (const std::string& name : physicsTests()) {
+    EXPECT_EQ(seen.count(name), 1u) << name << " (a6_tests) is not run by a6_grade";
+  }
+  // Extra credit is the bending springs, counted there and not in the cloth item.
+  const int bending = r.itemFor("Task4Cloth.BendingSpringsSkipOneParticle");
+  ASSERT_GE(bending, 0);
+  EXPECT_TRUE(r.items[static_cast<std::size_t>(bending)].extraCredit);
+  EXPECT_FALSE(
+      r.items[static_cast<std::size_t>(r.itemFor("Task4Cloth.NoSpringAppearsTwice"))].extraCredit);
+}
+#endif
+
+}  // namespace
+}  // namespace a6::grader
