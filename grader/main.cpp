@@ -13,19 +13,24 @@
 // missing kit, an environment that cannot run the checks, a report that could not be written):
 // results.json is still written, with score 0 and the error; 2 for a bad command line.
 #include <gtest/gtest.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include "harness/student_code.h"
 #include "report.h"
@@ -63,15 +68,25 @@ using Clock = std::chrono::steady_clock;
 
 constexpr double kDefaultTimeLimit = 10;            // s, for a test that matches no item
 constexpr std::size_t kProbeOutputCap = 64u << 10;  // what the report keeps of the probe's output
+// A check whose requests crash the probe (or run out of time) gets this many probe starts; its
+// other requests then fail at once. So code that crashes on every call costs its own checks,
+// not the probe's restarts for every task after it.
+constexpr int kStartsPerCheck = 3;
+// How long a probe may take to reach main and answer a request that runs no student code.
+constexpr double kStartupSeconds = 5;
 
 // The student's code as the suite sees it in the grader: the probe, within the running test's
 // time budget. Without a probe (the build failed) every request fails with the reason, so each
 // check fails with a message instead of the grader stopping.
 class BudgetedStudent final : public harness::StudentCode {
  public:
+  /// `newCheck` runs when a check starts (it gives the probe client the check's restarts).
   BudgetedStudent(harness::StudentCode* probe, std::function<void(double)> setTimeout,
-                  std::string unavailable)
-      : probe_(probe), setTimeout_(std::move(setTimeout)), unavailable_(std::move(unavailable)) {}
+                  std::function<void()> newCheck, std::string unavailable)
+      : probe_(probe),
+        setTimeout_(std::move(setTimeout)),
+        newCheck_(std::move(newCheck)),
+        unavailable_(std::move(unavailable)) {}
 
   /// Why the probe could not be started at all (a grader problem), or "".
   const std::string& startError() const { return startError_; }
@@ -81,6 +96,8 @@ class BudgetedStudent final : public harness::StudentCode {
     limit_ = seconds;
     deadline_ = Clock::now() +
                 std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    lastFailure_.clear();
+    if (newCheck_) newCheck_();
   }
 
   harness::SpringForceResult springForce(const harness::SpringForceRequest& r) override {
@@ -131,6 +148,14 @@ class BudgetedStudent final : public harness::StudentCode {
       if (result.error.rfind("could not start the probe", 0) == 0 && startError_.empty()) {
         startError_ = result.error;
       }
+      // This check used up its probe starts: say why, in the check's terms.
+      if (result.error.rfind("the probe was started ", 0) == 0) {
+        result.error = "your code crashed or ran out of time " + std::to_string(kStartsPerCheck) +
+                       " times in this check, so its other requests were not run" +
+                       (lastFailure_.empty() ? "" : "; the last time: " + lastFailure_);
+      } else if (!result.error.empty()) {
+        lastFailure_ = result.error;
+      }
       return result;
     } catch (const std::exception& e) {
       result.error = std::string("the grader could not run your code: ") + e.what();
@@ -142,7 +167,9 @@ class BudgetedStudent final : public harness::StudentCode {
 
   harness::StudentCode* probe_;
   std::function<void(double)> setTimeout_;
+  std::function<void()> newCheck_;
   std::string unavailable_;
+  std::string lastFailure_;  // the last failed request of the running check
   std::string startError_;
   double limit_ = kDefaultTimeLimit;
   Clock::time_point deadline_ = Clock::now();
@@ -187,9 +214,76 @@ std::vector<fs::path> hiddenFromProbe(const std::vector<fs::path>& secrets, cons
   for (const fs::path& secret : secrets) {
     hideExcept(fs::absolute(secret).lexically_normal(), {work.lexically_normal()}, hide);
   }
+  // Folders every user may write to: covered too (read-only and empty in the probe's view; the
+  // sandbox keeps the probe's own folders visible where they lie inside one), so that a probe
+  // leaves nothing behind for the next submission's probe or anyone else.
+  for (const char* shared : {"/tmp", "/var/tmp", "/dev/shm", "/run/lock", "/dev/mqueue"}) {
+    std::error_code ec;
+    const fs::file_status status = fs::symlink_status(shared, ec);
+    if (!ec && fs::is_directory(status)) hide.emplace_back(shared);
+  }
   std::sort(hide.begin(), hide.end());
   hide.erase(std::unique(hide.begin(), hide.end()), hide.end());
   return hide;
+}
+
+#ifdef A6_GRADE_HAVE_PROBE
+// Whether a probe reaches main and serves: "" when it answers, twice, a request that runs no
+// student code (a scene request with an invalid frame, refused before any scene is made);
+// otherwise why not (it crashed, exited or hung before main: a static initializer, typically).
+std::string startupFailure(const fs::path& probe, const fs::path& runDir,
+                           const std::vector<fs::path>& hide) {
+  ProbeClient client(probe, runDir, Limits{});
+  client.setHidden(hide);
+  client.setRequestTimeout(kStartupSeconds);
+  client.setMaxStarts(1);
+  harness::SceneRequest ping;
+  ping.frames = {-1};
+  for (int k = 0; k < 2; ++k) {
+    const harness::SceneResult r = client.runScene(ping);
+    if (r.error.rfind("runScene: frame -1", 0) == 0) continue;
+    if (r.error.rfind("your code took longer", 0) == 0) {
+      std::ostringstream out;
+      out << "it did not reach main within " << kStartupSeconds << " s (is there an endless "
+          << "loop in code that runs before main, such as a static initializer?)";
+      return out.str();
+    }
+    return r.error.empty() ? "it answered a request it must refuse" : r.error;
+  }
+  return "";
+}
+#endif
+
+// With the grader a child subreaper, what a probe forked and left behind (a child that left
+// the probe's process group, say) becomes this process's child when the probe ends: kill and
+// reap every child left, until none is (they may fork meanwhile; the process limit bounds them).
+void killStrays() {
+  const pid_t self = getpid();
+  for (int round = 0; round < 100; ++round) {
+    int found = 0;
+    std::error_code ec;
+    for (fs::directory_iterator it("/proc", ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
+      std::ifstream stat(it->path() / "stat");
+      std::string line;
+      std::getline(stat, line);
+      // pid (comm) state ppid ...: comm may hold spaces and parentheses, so read after the last ')'.
+      const std::size_t close = line.rfind(')');
+      if (close == std::string::npos) continue;
+      std::istringstream rest(line.substr(close + 1));
+      char state = 0;
+      long ppid = 0;
+      rest >> state >> ppid;
+      if (ppid != self) continue;
+      ++found;
+      kill(static_cast<pid_t>(std::stol(name)), SIGKILL);
+    }
+    while (waitpid(-1, nullptr, WNOHANG) > 0) {
+    }
+    if (found == 0) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
 }
 
 // Records every test's outcome, from GoogleTest's events, and gives each test its time limit.
@@ -371,6 +465,63 @@ struct Options {
   bool color = false;
 };
 
+#if defined(A6_GRADE_HAVE_BUILD) && defined(A6_GRADE_HAVE_PROBE)
+// Code that runs before main (static initializers) can keep the whole probe from serving: an
+// exit(), an abort(), a crash or an endless loop there would fail every check of every task.
+// So the probe must first start up (startupFailure); if it does not, each compiled file is tried
+// alone among the starter's objects, and the files whose probe does not start are replaced by
+// the starter's: they cost their own task, as a file that does not compile does. Returns why no
+// probe can serve at all (every check then fails at once with that reason), or "".
+std::string checkStartup(const Kit& kit, GradeReport& report, const fs::path& work,
+                         const std::vector<fs::path>& secrets) {
+  const std::vector<fs::path> hide = hiddenFromProbe(secrets, work);
+  const std::string failure = startupFailure(report.build.probe, work / "startup", hide);
+  if (failure.empty()) return "";
+
+  std::map<std::string, std::string> culprits;  // task file -> why its probe did not start
+  for (const TaskBuild& task : report.build.tasks) {
+    if (task.status != TaskBuild::Status::Compiled) continue;
+    Intake alone;
+    alone.files[task.file] = report.intake.files.at(task.file);
+    const fs::path dir = work / "startup" / fs::path(task.file).stem();
+    const Build solo = buildProbe(kit, alone, dir / "build");
+    if (!solo.ok()) continue;
+    const std::string why = startupFailure(solo.probe, dir / "run", hide);
+    if (!why.empty()) culprits[task.file] = why;
+  }
+  const std::string whole =
+      "the program built from your files did not start: " + failure +
+      "\n(Code that runs before main, such as the initializer of a global or static variable, "
+      "must not exit, abort, crash or loop.)";
+  if (culprits.empty()) return whole;  // only the files together fail: nothing to single out
+
+  Intake rest = report.intake;
+  for (const auto& [file, why] : culprits) rest.files.erase(file);
+  Build rebuilt = buildProbe(kit, rest, work / "build-without-startup-failures");
+  if (!rebuilt.ok()) return whole;
+  for (std::size_t i = 0; i < rebuilt.tasks.size() && i < report.build.tasks.size(); ++i) {
+    TaskBuild& task = rebuilt.tasks[i];
+    const auto culprit = culprits.find(task.file);
+    if (culprit == culprits.end()) continue;
+    task = report.build.tasks[i];
+    task.status = TaskBuild::Status::LinkError;
+    task.messages += task.file + " compiled, but the program built with it did not start: " +
+                     culprit->second +
+                     "\nCode that runs before main, such as the initializer of a global or static "
+                     "variable, must not exit, abort, crash or loop. Task " + std::to_string(i + 1) +
+                     " is graded with the starter's stub.\n";
+  }
+  rebuilt.seconds += report.build.seconds;
+  report.build = rebuilt;
+  if (const std::string still = startupFailure(report.build.probe, work / "startup", hide);
+      !still.empty()) {
+    return "the program built from your files did not start, even with the starter's code in "
+           "place of the files that kept it from starting: " + still;
+  }
+  return "";
+}
+#endif
+
 // One grading run. Every stage is guarded: a failure becomes an error in the report.
 int grade(const Options& options, const Rubric& rubric) {
   const auto start = Clock::now();
@@ -438,6 +589,11 @@ int grade(const Options& options, const Rubric& rubric) {
             "the grader could not build a program from your files (a grader problem, "
             "not yours; your instructor sees the details)";
       }
+#ifdef A6_GRADE_HAVE_PROBE
+      else {
+        unavailable = checkStartup(kit, report, work, secrets);
+      }
+#endif
     }
   } catch (const std::exception& e) {
     fail(std::string("building the submission failed: ") + e.what());
@@ -451,6 +607,7 @@ int grade(const Options& options, const Rubric& rubric) {
   // 3. Run the checks here, against the probe.
   std::unique_ptr<harness::StudentCode> probe;
   std::function<void(double)> setTimeout;
+  std::function<void()> newCheck;
 #ifdef A6_GRADE_HAVE_PROBE
   if (unavailable.empty()) {
     try {
@@ -458,6 +615,7 @@ int grade(const Options& options, const Rubric& rubric) {
       client->setHidden(hiddenFromProbe(secrets, work));
       ProbeClient* raw = client.get();
       setTimeout = [raw](double seconds) { raw->setRequestTimeout(seconds); };
+      newCheck = [raw] { raw->setMaxStarts(raw->starts() + kStartsPerCheck); };
       probe = std::move(client);
     } catch (const std::exception& e) {
       fail(std::string("starting the probe failed: ") + e.what());
@@ -470,7 +628,7 @@ int grade(const Options& options, const Rubric& rubric) {
     unavailable = "the grader could not run your code (a grader problem, not yours)";
   }
 #endif
-  BudgetedStudent student(probe.get(), setTimeout, unavailable);
+  BudgetedStudent student(probe.get(), setTimeout, newCheck, unavailable);
   gStudent = &student;
   int skipped = 0;
   try {
@@ -517,6 +675,7 @@ int grade(const Options& options, const Rubric& rubric) {
 #endif
   gStudent = nullptr;
   probe.reset();
+  killStrays();
 
   // 4. Score, 5. report.
   try {
@@ -547,6 +706,8 @@ harness::StudentCode& student() { return *gStudent; }
 }  // namespace a6::test
 
 int main(int argc, char** argv) {
+  // What a probe leaves running when it ends is reparented here, to be killed (killStrays).
+  prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
   Options options;
   CLI::App app{"a6_grade: grades one Assignment 6 submission (docs/instructor.md)"};
   app.add_option("submission", options.submission,

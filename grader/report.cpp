@@ -71,7 +71,8 @@ std::string describeBuild(const TaskBuild& t) {
     case TaskBuild::Status::TimedOut:
       return "the compiler ran out of time: graded with the starter code";
     case TaskBuild::Status::LinkError:
-      return "compiled but could not be linked with the framework: graded with the starter code";
+      return "compiled, but could not be linked or started with the framework: graded with the "
+             "starter code";
   }
   return "?";
 }

@@ -1,0 +1,27 @@
+// HOSTILE SUBMISSION (grader test fixture, tests/grader/hostile_test.cpp): exit(0) before main.
+//
+// A correct spring, but a static initializer ends the program with status 0 before main runs,
+// so the probe never answers a request. Expected: a6_grade finishes, every check fails with
+// "the probe ... exited with 0" (nothing can be graded: no task has a working program), and
+// nothing claims success.
+#include <cstdio>
+#include <cstdlib>
+
+#include "a6/spring.h"
+
+namespace {
+const int kGone = (std::puts("hostile: exiting with 0 before main"), std::exit(0), 0);
+}  // namespace
+
+namespace a6 {
+
+Vec2 Spring::computeForce() const {
+  const Vec2 d = p2->x - p1->x;
+  const double l = d.norm();
+  if (l < 1e-12) return Vec2::Zero();
+  const Vec2 e = d / l;
+  const double vRel = (p2->v - p1->v).dot(e);
+  return -ks * (l - restLength) * e - kd * vRel * e;
+}
+
+}  // namespace a6
