@@ -1,6 +1,7 @@
 // a6_grade: grades one submission (grader/DESIGN.md).
 //
 //   a6_grade SUBMISSION --out DIR [--rubric FILE] [--seed N] [--kit FILE] [--jobs N]
+//            [--time-budget S] [--tests FILTER] [--quiet] [--color]
 //   a6_grade --list-tests [--rubric FILE]
 //
 // Stages: intake -> build -> run the physics suite (and the golden-image checks) in this process
@@ -14,6 +15,7 @@
 // results.json is still written, with score 0 and the error; 2 for a bad command line.
 #include <gtest/gtest.h>
 #include <sys/prctl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -74,6 +76,9 @@ constexpr std::size_t kProbeOutputCap = 64u << 10;  // what the report keeps of 
 constexpr int kStartsPerCheck = 3;
 // How long a probe may take to reach main and answer a request that runs no student code.
 constexpr double kStartupSeconds = 5;
+// The time the student's code may take over all checks together (--time-budget), s: well within
+// Gradescope's default of 10 minutes for the whole run, which would otherwise end it with a 0.
+constexpr double kDefaultTimeBudget = 420;
 
 // The student's code as the suite sees it in the grader: the probe, within the running test's
 // time budget. Without a probe (the build failed) every request fails with the reason, so each
@@ -90,6 +95,13 @@ class BudgetedStudent final : public harness::StudentCode {
 
   /// Why the probe could not be started at all (a grader problem), or "".
   const std::string& startError() const { return startError_; }
+
+  /// All checks together may use `seconds` of the student's code's time, from now on.
+  void setTotalBudget(double seconds) {
+    budget_ = seconds;
+    budgetEnd_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                    std::chrono::duration<double>(seconds));
+  }
 
   /// A new check starts: its requests share `seconds` of wall-clock time.
   void startTest(double seconds) {
@@ -133,7 +145,15 @@ class BudgetedStudent final : public harness::StudentCode {
       result.error = unavailable_;
       return result;
     }
-    const double remaining = std::chrono::duration<double>(deadline_ - Clock::now()).count();
+    const double overall = std::chrono::duration<double>(budgetEnd_ - Clock::now()).count();
+    if (overall < 0.01) {
+      std::ostringstream out;
+      out << "not run: the checks before it used up the time all checks together may take ("
+          << budget_ << " s; their messages say which ran out of time)";
+      result.error = out.str();
+      return result;
+    }
+    double remaining = std::chrono::duration<double>(deadline_ - Clock::now()).count();
     if (remaining < 0.01) {
       std::ostringstream out;
       out << "this check's time limit of " << limit_
@@ -141,6 +161,7 @@ class BudgetedStudent final : public harness::StudentCode {
       result.error = out.str();
       return result;
     }
+    remaining = std::min(remaining, overall);
     if (setTimeout_) setTimeout_(remaining);
     try {
       result = forward();
@@ -173,6 +194,8 @@ class BudgetedStudent final : public harness::StudentCode {
   std::string startError_;
   double limit_ = kDefaultTimeLimit;
   Clock::time_point deadline_ = Clock::now();
+  double budget_ = kDefaultTimeBudget;
+  Clock::time_point budgetEnd_ = Clock::time_point::max();
 };
 
 BudgetedStudent* gStudent = nullptr;
@@ -268,7 +291,7 @@ void killStrays() {
       std::ifstream stat(it->path() / "stat");
       std::string line;
       std::getline(stat, line);
-      // pid (comm) state ppid ...: comm may hold spaces and parentheses, so read after the last ')'.
+      // "pid (comm) state ppid ...": comm may hold spaces and ')', so read from the last ')'.
       const std::size_t close = line.rfind(')');
       if (close == std::string::npos) continue;
       std::istringstream rest(line.substr(close + 1));
@@ -459,6 +482,7 @@ struct Options {
   std::string kit;
   std::optional<std::uint64_t> seed;
   int jobs = 0;
+  double timeBudget = kDefaultTimeBudget;
   std::string filter;
   bool listTests = false;
   bool quiet = false;
@@ -505,22 +529,53 @@ std::string checkStartup(const Kit& kit, GradeReport& report, const fs::path& wo
     if (culprit == culprits.end()) continue;
     task = report.build.tasks[i];
     task.status = TaskBuild::Status::LinkError;
-    task.messages += task.file + " compiled, but the program built with it did not start: " +
-                     culprit->second +
+    task.messages += task.file +
+                     " compiled, but the program built with it did not start: " + culprit->second +
                      "\nCode that runs before main, such as the initializer of a global or static "
-                     "variable, must not exit, abort, crash or loop. Task " + std::to_string(i + 1) +
-                     " is graded with the starter's stub.\n";
+                     "variable, must not exit, abort, crash or loop. Task " +
+                     std::to_string(i + 1) + " is graded with the starter's stub.\n";
   }
   rebuilt.seconds += report.build.seconds;
   report.build = rebuilt;
   if (const std::string still = startupFailure(report.build.probe, work / "startup", hide);
       !still.empty()) {
     return "the program built from your files did not start, even with the starter's code in "
-           "place of the files that kept it from starting: " + still;
+           "place of the files that kept it from starting: " +
+           still;
   }
   return "";
 }
 #endif
+
+// As root, the sandbox runs the compiler and the probe as nobody (SandboxSpec's default user):
+// they must be able to enter every folder down to the work folder.
+constexpr uid_t kSandboxUid = 65534;
+constexpr gid_t kSandboxGid = 65534;
+
+bool enterableBy(const fs::path& dir, uid_t uid, gid_t gid) {
+  for (fs::path p = dir;; p = p.parent_path()) {
+    struct stat st;
+    if (stat(p.c_str(), &st) == 0) {
+      const mode_t x = st.st_uid == uid ? S_IXUSR : st.st_gid == gid ? S_IXGRP : S_IXOTH;
+      if ((st.st_mode & x) == 0) return false;
+    }
+    if (p.empty() || p == p.root_path()) return true;
+  }
+}
+
+// A fresh scratch folder that the sandbox's user can enter, or "" when none can be made.
+fs::path enterableScratch() {
+  std::error_code ec;
+  fs::path base = fs::temp_directory_path(ec);
+  if (ec || !enterableBy(base, kSandboxUid, kSandboxGid)) base = "/tmp";
+  std::string name = (base / "a6_grade.XXXXXX").string();
+  if (mkdtemp(name.data()) == nullptr) return {};
+  fs::permissions(name,
+                  fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                      fs::perms::others_read | fs::perms::others_exec,
+                  ec);
+  return name;
+}
 
 // One grading run. Every stage is guarded: a failure becomes an error in the report.
 int grade(const Options& options, const Rubric& rubric) {
@@ -532,7 +587,8 @@ int grade(const Options& options, const Rubric& rubric) {
   report.maxScore = rubric.ok() ? rubric.totalPoints : 0;
   const fs::path out = fs::absolute(options.out);
   const fs::path results = out / "results.json";
-  const fs::path work = out / "work";
+  fs::path work = out / "work";
+  fs::path scratch;  // the work folder when `out` is out of the sandbox's reach; removed at the end
   bool graderFailed = false;
   auto fail = [&](const std::string& what) {
     report.errors.push_back(what);
@@ -550,6 +606,19 @@ int grade(const Options& options, const Rubric& rubric) {
     }
   }
   if (!rubric.ok()) fail("the rubric is invalid:\n" + rubric.error);
+
+  // The compiler and the probe could not read the submission's files under `out` (a home folder
+  // of mode 0700, say): then the scratch files go where they can, and are removed afterwards.
+  if (geteuid() == 0 && !enterableBy(out, kSandboxUid, kSandboxGid)) {
+    scratch = enterableScratch();
+    if (!scratch.empty()) {
+      work = scratch;
+      report.notes.push_back("the output folder " + out.string() +
+                             " cannot be entered by the sandbox's user (nobody), so the scratch "
+                             "files went to " +
+                             work.string() + " (removed afterwards)");
+    }
+  }
 
   std::error_code ec;
   fs::remove_all(work, ec);
@@ -629,6 +698,7 @@ int grade(const Options& options, const Rubric& rubric) {
   }
 #endif
   BudgetedStudent student(probe.get(), setTimeout, newCheck, unavailable);
+  student.setTotalBudget(options.timeBudget);
   gStudent = &student;
   int skipped = 0;
   try {
@@ -693,6 +763,7 @@ int grade(const Options& options, const Rubric& rubric) {
     std::fprintf(stderr, "a6_grade: %s\n", e.c_str());
     status = 1;
   }
+  if (!scratch.empty()) fs::remove_all(scratch, ec);
   std::fputs(terminalSummary(report, options.color).c_str(), stdout);
   std::printf("results: %s\nreport:  %s\n", results.c_str(), (out / "report.html").c_str());
   std::fflush(stdout);
@@ -722,6 +793,11 @@ int main(int argc, char** argv) {
                  "accepted for scripts that grade in batches; one grading compiles its six "
                  "files one after another")
       ->check(CLI::Range(0, 64));
+  app.add_option("--time-budget", options.timeBudget,
+                 "seconds the student's code may take over all checks together (default 420); "
+                 "checks after that fail unrun, so that a submission that loops in many places "
+                 "still gets its results within Gradescope's limit")
+      ->check(CLI::Range(1.0, 86400.0));
   app.add_option("--tests", options.filter,
                  "only the checks matching this GoogleTest filter (debugging: the score is then "
                  "partial)");

@@ -385,7 +385,8 @@ const char* const kCss = R"(
 body { font: 14px/1.45 system-ui, sans-serif; margin: 2em auto; max-width: 72em; color: #222; }
 h1 { font-size: 1.6em; margin-bottom: .2em; } h2 { margin-top: 1.6em; border-bottom: 1px solid #ddd; }
 table { border-collapse: collapse; margin: .5em 0; } td, th { padding: .25em .7em; text-align: left;
-  border-bottom: 1px solid #eee; vertical-align: top; } th { background: #f5f5f5; }
+  border-bottom: 1px solid #eee; vertical-align: top; }
+th { background: #f5f5f5; white-space: nowrap; }
 .num { text-align: right; font-variant-numeric: tabular-nums; }
 .pass { color: #17692b; font-weight: 600; } .fail { color: #b3261e; font-weight: 600; }
 .box { padding: .6em 1em; border-radius: 6px; margin: .6em 0; }
@@ -549,18 +550,18 @@ std::string terminalSummary(const GradeReport& report, bool color) {
   std::ostringstream out;
   out << bold << (report.rubricTitle.empty() ? "Grade" : report.rubricTitle) << reset << " — "
       << report.submission << " (seed " << report.seed << ")\n";
-  out << "  " << std::left << std::setw(6) << "#" << std::setw(44) << "item" << std::right
+  out << "  " << std::left << std::setw(6) << "#" << std::setw(46) << "item" << std::right
       << std::setw(16) << "points"
       << "   checks\n";
   for (const ScoredItem& s : report.items) {
     std::string name = s.item.name + (s.item.extraCredit ? " [extra]" : "");
-    if (name.size() > 43) name = name.substr(0, 40) + "...";
+    if (name.size() > 45) name = name.substr(0, 42) + "...";
     const std::string points = fixed2(s.score) + " / " + fixed2(s.item.points);
-    out << "  " << std::left << std::setw(6) << s.number << std::setw(44) << name << std::right
+    out << "  " << std::left << std::setw(6) << s.number << std::setw(46) << name << std::right
         << std::setw(16) << points << "   " << (s.failed == 0 && !s.tests.empty() ? green : red)
         << s.passed << " passed, " << s.failed << " failed" << reset << "\n";
   }
-  out << "  " << std::left << std::setw(50) << "total" << std::right << std::setw(16)
+  out << "  " << std::left << std::setw(52) << "total" << std::right << std::setw(16)
       << (fixed2(report.score - report.extraCredit) + " / " + fixed2(report.maxScore));
   if (report.extraCredit > 0) out << "   +" << fixed2(report.extraCredit) << " extra credit";
   out << "\n";

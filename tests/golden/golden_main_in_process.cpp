@@ -4,7 +4,15 @@
 
 #include "golden_suite.h"
 
+namespace {
+std::unique_ptr<a6::harness::StudentCode> gStudent;
+}  // namespace
+
+namespace a6::test {
+harness::StudentCode& student() { return *gStudent; }
+}  // namespace a6::test
+
 int main(int argc, char** argv) {
-  const std::unique_ptr<a6::harness::StudentCode> student = a6::harness::makeInProcess();
-  return a6::test::runGoldenTests(argc, argv, *student);
+  gStudent = a6::harness::makeInProcess();
+  return a6::test::runGoldenTests(argc, argv);
 }

@@ -1,16 +1,15 @@
-// The golden-image tests as a library: they reach the student's code only through a
-// harness::StudentCode, so they link without student code (the grader can run them against its
-// sandboxed probe, rendering and comparing in its own process).
+// The golden-image tests' in-process driver (golden_main_in_process.cpp): the checks of
+// golden_checks.h plus the determinism tests and the command line.
 #pragma once
 
-#include "harness/student_code.h"
+#include "golden_checks.h"
 
 namespace a6::test {
 
 /// Runs the golden-image tests (one per manifest image, GoldenTask<task>.<name>) and the
-/// determinism tests against `student`: parses GoogleTest's flags and ours (--manifest=FILE,
+/// determinism tests against student(): parses GoogleTest's flags and ours (--manifest=FILE,
 /// --failures=DIR, --tasks=N,N, --verbose), runs, and prints the summary line
 /// "A6-GOLDEN passed=P failed=F skipped=S". Returns the exit status for main().
-int runGoldenTests(int argc, char** argv, harness::StudentCode& student);
+int runGoldenTests(int argc, char** argv);
 
 }  // namespace a6::test

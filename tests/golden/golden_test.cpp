@@ -1,7 +1,8 @@
 // Golden-image checks: every image of tests/golden/manifest.json, rendered here from the
 // student's code and compared with its approved references (docs/rendering.md). No student code
-// is linked here: it is reached through a harness::StudentCode (golden_main_in_process.cpp
-// passes the in-process one; the grader may pass its probe).
+// is linked here (target a6_golden_checks): it is reached through a6::test::student()
+// (golden_main_in_process.cpp defines the in-process one; a6_grade its sandboxed probe, calling
+// registerGoldenChecks from golden_checks.h).
 //
 // Each image is one test, GoldenTask<task>.<name> (e.g. GoldenTask4.cloth_shear_f120), so the
 // task is in the name. The scene runs through the harness (StudentCode::runScene, the request
@@ -18,7 +19,8 @@
 // (ctest's wrong-version checks read it); without a readable manifest it is "A6-GOLDEN no
 // manifest".
 //
-// Determinism.* checks that a scene rendered twice from scratch gives the same bytes.
+// Determinism.* checks that a scene rendered twice from scratch gives the same bytes (registered
+// by runGoldenTests only: the grader runs the images alone).
 #include "render/golden.h"
 
 #include <gtest/gtest.h>
@@ -34,6 +36,7 @@
 #include <vector>
 
 #include "contexts/gl_context.h"
+#include "golden_checks.h"
 #include "golden_suite.h"
 #include "render/renderer.h"
 
@@ -59,23 +62,16 @@ Config& config() {
   return c;
 }
 
-// One headless context, one renderer, the student's code, and each scene's run, shared by all
-// tests of the program.
-class Session {
+// Each scene's run through the student's code, shared by all image tests of the program: the
+// frames its images need are gathered when they are registered, so that each scene runs once.
+class Scenes {
  public:
-  static Session& get() {
-    static Session session;
-    return session;
+  static Scenes& get() {
+    static Scenes scenes;
+    return scenes;
   }
 
-  /// Why there is no renderer ("" when there is one).
-  const std::string& glError() const { return glError_; }
-  Renderer& renderer() { return *renderer_; }
-  const GLContext& context() const { return *context_.context; }
-  harness::StudentCode& student() { return *student_; }
-  void setStudent(harness::StudentCode* student) { student_ = student; }
-
-  /// Frames each scene's images need, so that each scene runs once.
+  /// Frames each scene's images need.
   void need(const std::string& scene, int frame) { frames_[scene].push_back(frame); }
 
   /// The snapshot of `scene` after `frame` frames, or the harness's error.
@@ -85,7 +81,7 @@ class Session {
       harness::SceneRequest request;
       request.scene = scene;
       request.frames = frames_[scene];
-      it = runs_.emplace(scene, student_->runScene(request)).first;
+      it = runs_.emplace(scene, student().runScene(request)).first;
     }
     const harness::SceneResult& run = it->second;
     if (!run.ok()) {
@@ -99,6 +95,24 @@ class Session {
     *error = "frame " + std::to_string(frame) + " was not recorded";
     return nullptr;
   }
+
+ private:
+  std::map<std::string, std::vector<int>> frames_;
+  std::map<std::string, harness::SceneResult> runs_;
+};
+
+// One headless context and one renderer, made when the first test needs them.
+class Session {
+ public:
+  static Session& get() {
+    static Session session;
+    return session;
+  }
+
+  /// Why there is no renderer ("" when there is one).
+  const std::string& glError() const { return glError_; }
+  Renderer& renderer() { return *renderer_; }
+  const GLContext& context() const { return *context_.context; }
 
   /// Fails (A6_REQUIRE_GL=1, as in CI) or skips the running test when there is no GL.
   bool requireGl() {
@@ -131,9 +145,6 @@ class Session {
   ContextResult context_;
   std::unique_ptr<Renderer> renderer_;
   std::string glError_;
-  harness::StudentCode* student_ = nullptr;
-  std::map<std::string, std::vector<int>> frames_;
-  std::map<std::string, harness::SceneResult> runs_;
 };
 
 // The head of every failure message: which image, which tasks.
@@ -161,7 +172,7 @@ class GoldenImageTest : public ::testing::Test {
     }
     // The student's code runs the scene (in-process here; in the grader's probe there).
     std::string error;
-    const Snapshot* snapshot = session.snapshot(image_.scene, image_.frame, &error);
+    const Snapshot* snapshot = Scenes::get().snapshot(image_.scene, image_.frame, &error);
     ASSERT_NE(snapshot, nullptr) << header(image_) << "  the student code failed: " << error
                                  << "\n  hint: " << image_.hint;
     // This process draws and compares.
@@ -179,6 +190,14 @@ class GoldenImageTest : public ::testing::Test {
 
     const golden::FailureFiles files =
         golden::writeFailureImages(image_, actual, verdict.expected, config().failures);
+    // For reports that show the images side by side (a6_grade): the files that were written.
+    if (files.error.empty()) {
+      RecordProperty("student_image", files.actual);
+      if (!verdict.expected.empty()) {
+        RecordProperty("reference_image", files.expected);
+        RecordProperty("difference_image", files.difference);
+      }
+    }
     std::ostringstream message;
     message << header(image_) << "  differs from every approved reference (compare: "
             << golden::toString(image_.compare) << ", exact first, then tolerance "
@@ -218,9 +237,12 @@ class ManifestError : public ::testing::Test {
   std::string error_;
 };
 
+}  // namespace
+
 // Registers one test per manifest image (false: the manifest could not be read, and one
-// failing test says why).
-bool registerGoldenTests() {
+// failing test, Manifest.Reads, says why).
+bool registerGoldenChecks(const std::string& failuresDir) {
+  config().failures = std::filesystem::absolute(failuresDir).lexically_normal().string();
   golden::ManifestResult read = golden::readManifest(config().manifest);
   if (!read) {
     const std::string error = read.error;
@@ -233,7 +255,7 @@ bool registerGoldenTests() {
     bool wanted = config().tasks.empty();
     for (int task : config().tasks) wanted = wanted || image.exercises(task);
     if (!wanted) continue;
-    Session::get().need(image.scene, image.frame);
+    Scenes::get().need(image.scene, image.frame);
     const std::string suite = "GoldenTask" + std::to_string(image.task);
     const std::string folder = manifest.folder;
     ::testing::RegisterTest(
@@ -243,6 +265,8 @@ bool registerGoldenTests() {
   return true;
 }
 
+namespace {
+
 // Determinism: a fresh run of a scene, rendered, twice -------------------------------------------
 
 Image renderFresh(const std::string& scene, int frame, std::string* error) {
@@ -250,7 +274,7 @@ Image renderFresh(const std::string& scene, int frame, std::string* error) {
   harness::SceneRequest request;
   request.scene = scene;
   request.frames = {frame};
-  const harness::SceneResult run = session.student().runScene(request);
+  const harness::SceneResult run = student().runScene(request);
   if (!run.ok()) {
     *error = run.error;
     return Image();
@@ -279,9 +303,34 @@ void expectSameBytesTwice(const std::string& scene, int frame) {
                               "kept between runs (a static).";
 }
 
-TEST(Determinism, ClothRendersTheSameBytesTwice) { expectSameBytesTwice("cloth_shear", 60); }
-TEST(Determinism, FireRendersTheSameBytesTwice) { expectSameBytesTwice("fire", 120); }
-TEST(Determinism, Box2DCarRendersTheSameBytesTwice) { expectSameBytesTwice("car", 60); }
+class DeterminismTest : public ::testing::Test {
+ public:
+  DeterminismTest(std::string scene, int frame) : scene_(std::move(scene)), frame_(frame) {}
+  void TestBody() override { expectSameBytesTwice(scene_, frame_); }
+
+ private:
+  std::string scene_;
+  int frame_;
+};
+
+// Registered here, not with TEST(): a6_grade links this file and runs the images only.
+void registerDeterminismTests() {
+  const struct {
+    const char* name;
+    const char* scene;
+    int frame;
+  } cases[] = {{"ClothRendersTheSameBytesTwice", "cloth_shear", 60},
+               {"FireRendersTheSameBytesTwice", "fire", 120},
+               {"Box2DCarRendersTheSameBytesTwice", "car", 60}};
+  for (const auto& c : cases) {
+    const std::string scene = c.scene;
+    const int frame = c.frame;
+    ::testing::RegisterTest("Determinism", c.name, nullptr, nullptr, __FILE__, __LINE__,
+                            [scene, frame]() -> ::testing::Test* {
+                              return new DeterminismTest(scene, frame);
+                            });
+  }
+}
 
 // The command line ---------------------------------------------------------------------------
 
@@ -298,12 +347,12 @@ std::set<int> parseTasks(const std::string& text) {
 
 }  // namespace
 
-int runGoldenTests(int argc, char** argv, harness::StudentCode& student) {
+int runGoldenTests(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  Session::get().setStudent(&student);
   namespace fs = std::filesystem;
   const fs::path program = fs::absolute(argv[0]).lexically_normal();
-  config().failures = (program.parent_path() / "golden_failures" / program.filename()).string();
+  std::string failures =
+      (program.parent_path() / "golden_failures" / program.filename()).string();
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
     auto value = [&](const char* flag) -> const char* {
@@ -313,7 +362,7 @@ int runGoldenTests(int argc, char** argv, harness::StudentCode& student) {
     if (const char* v = value("--manifest")) {
       config().manifest = v;
     } else if (const char* v = value("--failures")) {
-      config().failures = fs::absolute(v).lexically_normal().string();
+      failures = fs::absolute(v).lexically_normal().string();
     } else if (const char* v = value("--tasks")) {
       config().tasks = parseTasks(v);
     } else if (arg == "--verbose") {
@@ -326,7 +375,8 @@ int runGoldenTests(int argc, char** argv, harness::StudentCode& student) {
       return 2;
     }
   }
-  const bool manifestRead = registerGoldenTests();
+  registerDeterminismTests();
+  const bool manifestRead = registerGoldenChecks(failures);
   const int status = RUN_ALL_TESTS();
   if (!manifestRead) {
     std::printf("A6-GOLDEN no manifest\n");

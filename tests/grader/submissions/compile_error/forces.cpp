@@ -8,7 +8,9 @@
 namespace a6 {
 
 // Gravity: m g.
+// clang-format off
 Vec2 gravityForce(const Particle& p, const Vec2& g) { return p.m * g }  // the semicolon is missing
+// clang-format on
 
 // Buoyancy: b (T - T_air) (0, 1).
 Vec2 buoyancyForce(const Particle& p, double b, double airTemperature) {

@@ -2,14 +2,12 @@
 //
 // computeForce ends the program with status 0 (as if everything had gone well). Expected: each
 // task 1 check fails with "the probe crashed: exited with 0", every other task keeps its points.
-#include <cstdlib>
-
 #include "a6/spring.h"
+
+#include <cstdlib>
 
 namespace a6 {
 
-Vec2 Spring::computeForce() const {
-  std::exit(0);
-}
+Vec2 Spring::computeForce() const { std::exit(0); }
 
 }  // namespace a6

@@ -4,9 +4,9 @@
 // passing GoogleTest run and our per-task summary line look like, on stdout and stderr, before
 // main and on every call. Expected: the score is unchanged (task 1 gets 0): a6_grade never reads
 // what the student's code prints.
-#include <cstdio>
-
 #include "a6/spring.h"
+
+#include <cstdio>
 
 namespace {
 

@@ -6,11 +6,11 @@
 // folder (three levels up from the probe's working directory, OUT/work/run/probe-N) and into
 // /autograder/results/. Expected: the score is unchanged (task 1 gets 0) and OUT/results.json is
 // the grader's own.
+#include "a6/spring.h"
+
 #include <sys/stat.h>
 
 #include <cstdio>
-
-#include "a6/spring.h"
 
 namespace {
 

@@ -4,14 +4,14 @@
 // (children do the same), then every child exits and the first process goes on to serve. The
 // sandbox's process limit stops the bomb at a few processes. Expected: full marks (the bomb
 // only costs time), the machine is unaffected, and no process of the submission is left over.
+#include "a6/spring.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-
-#include "a6/spring.h"
 
 namespace {
 

@@ -5,13 +5,13 @@
 // process group (setsid), ignores SIGHUP and SIGTERM and sleeps for ten minutes, holding the
 // probe's stdout. Expected: full marks, a6_grade does not wait for the child, and the child is
 // gone when a6_grade ends.
+#include "a6/spring.h"
+
 #include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
-
-#include "a6/spring.h"
 
 namespace {
 

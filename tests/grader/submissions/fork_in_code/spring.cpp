@@ -3,9 +3,9 @@
 // A correct spring that tries, on every call, to fork a child that would spin forever. The
 // probe's seccomp filter refuses fork (EPERM), so the spring goes on and returns the right force.
 // Expected: full marks, and no process of the submission is left running after a6_grade ends.
-#include <unistd.h>
-
 #include "a6/spring.h"
+
+#include <unistd.h>
 
 namespace a6 {
 

@@ -3,10 +3,10 @@
 // computeForce asks for 8 GiB and fills it. Expected: the probe's memory limit refuses it
 // (std::bad_alloc), task 1's checks fail with that reason, the grader and the machine are
 // unaffected, every other task keeps its points.
+#include "a6/spring.h"
+
 #include <cstddef>
 #include <vector>
-
-#include "a6/spring.h"
 
 namespace a6 {
 

@@ -2,9 +2,9 @@
 //
 // computeForce returns NaN in both components. Expected: task 1's checks fail (NaN is never
 // within a tolerance) with the actual value shown, every other task keeps its points.
-#include <limits>
-
 #include "a6/spring.h"
+
+#include <limits>
 
 namespace a6 {
 

@@ -2,10 +2,10 @@
 //
 // A correct spring, but a static initializer aborts before main runs, so the probe never
 // answers. Expected: a6_grade finishes, every check fails with "killed by SIGABRT".
+#include "a6/spring.h"
+
 #include <cstdio>
 #include <cstdlib>
-
-#include "a6/spring.h"
 
 namespace {
 const int kGone = (std::puts("hostile: aborting before main"), std::abort(), 0);

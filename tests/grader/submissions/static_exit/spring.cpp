@@ -4,10 +4,10 @@
 // so the probe never answers a request. Expected: a6_grade finishes, every check fails with
 // "the probe ... exited with 0" (nothing can be graded: no task has a working program), and
 // nothing claims success.
+#include "a6/spring.h"
+
 #include <cstdio>
 #include <cstdlib>
-
-#include "a6/spring.h"
 
 namespace {
 const int kGone = (std::puts("hostile: exiting with 0 before main"), std::exit(0), 0);

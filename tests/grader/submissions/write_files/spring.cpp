@@ -3,18 +3,18 @@
 // A correct spring that tries to leave a file named a6_hostile_was_here wherever it can: its
 // working directory, every folder above it (the grader's output folder, the build tree, the
 // repository, /), the repository's solution/ and tests/golden/, /tmp, /var/tmp, /dev/shm, /root,
-// /autograder/results; before main (before the probe's seccomp filter) and on every call.
+// /autograder/results; before main (before the probe's seccomp filter) and on its first call.
 // (@A6_SOURCE_DIR@ is replaced by the repository's path when the test stages the submission.)
 // Expected: full marks, and afterwards no such file exists anywhere outside the probe's own
 // working directory (which is removed).
+#include "a6/spring.h"
+
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <cstdio>
 #include <string>
 #include <vector>
-
-#include "a6/spring.h"
 
 namespace {
 
@@ -38,13 +38,15 @@ void plantEverywhere(bool report) {
     up += "/..";
     dirs.push_back(up);
   }
-  for (const char* d : {"@A6_SOURCE_DIR@", "@A6_SOURCE_DIR@/solution", "@A6_SOURCE_DIR@/tests/golden",
-                        "/tmp", "/var/tmp", "/dev/shm", "/root", "/autograder/results", "/"}) {
+  for (const char* d :
+       {"@A6_SOURCE_DIR@", "@A6_SOURCE_DIR@/solution", "@A6_SOURCE_DIR@/tests/golden", "/tmp",
+        "/var/tmp", "/dev/shm", "/root", "/autograder/results", "/"}) {
     dirs.emplace_back(d);
   }
   for (const std::string& d : dirs) {
     const bool ok = plant(d);
-    if (report) std::printf("hostile: %s %s/%s\n", ok ? "WROTE" : "could not write", d.c_str(), kName);
+    if (report)
+      std::printf("hostile: %s %s/%s\n", ok ? "WROTE" : "could not write", d.c_str(), kName);
   }
   std::fflush(stdout);
 }
@@ -56,7 +58,8 @@ const int kPlanted = (plantEverywhere(true), 0);
 namespace a6 {
 
 Vec2 Spring::computeForce() const {
-  plantEverywhere(false);
+  static const bool planted = (plantEverywhere(false), true);  // after the filter; once
+  (void)planted;
   const Vec2 d = p2->x - p1->x;
   const double l = d.norm();
   if (l < 1e-12) return Vec2::Zero();

@@ -1,0 +1,27 @@
+// The golden-image checks as a library (target a6_golden_checks: no student code, no
+// a6_framework): one GoogleTest test per image of tests/golden/manifest.json, named
+// GoldenTask<task>.<name>. Each runs its scene through a6::test::student() (in-process in the
+// student's golden binaries, the sandboxed probe in a6_grade) and renders and compares the
+// returned snapshot in THIS process; the manifest and the reference PNGs are read from the
+// source tree by absolute path (A6_GOLDEN_DIR), never by the student's code.
+#pragma once
+
+#include <string>
+
+#include "harness/student_code.h"
+
+namespace a6::test {
+
+/// The student's code the checks run (defined by the program: golden_main_in_process.cpp, or
+/// the grader's main).
+harness::StudentCode& student();
+
+/// Registers the image checks with GoogleTest (::testing::RegisterTest; call after
+/// InitGoogleTest and before RUN_ALL_TESTS). A failing check writes <name>.actual.png,
+/// <name>.expected.png and <name>.diff.png into `failuresDir` (created when needed) and records
+/// them as the test properties student_image, reference_image and difference_image. Nothing
+/// runs, and no GL context is made, until the tests do. Without a readable manifest, one failing
+/// test (GoldenTask0.ManifestReads) says why; returns false then.
+bool registerGoldenChecks(const std::string& failuresDir);
+
+}  // namespace a6::test

@@ -1,0 +1,692 @@
+// The trust boundary, proved: hostile and broken submissions graded by a6_grade.
+//
+// Each case is a submission that attacks the grader or breaks in a nasty way: the fixtures in
+// tests/grader/submissions/<case>/ (the files that differ from the solution; each opens with a
+// comment saying what it does and what it must get) or an archive written here. Every case is
+// graded by the real a6_grade, as a TA would run it, and must get
+//
+//   - exactly its honest score: the tasks it breaks earn what the starter's code earns there (its
+//     "twin", the solution with the starter's files for those tasks, is graded beside it), every
+//     other task keeps its full points (from the rubric's points, for the physics checks), and
+//     the total is never more than the rubric's points of the tasks it does not break;
+//   - a clear reason, in the items of the tasks it breaks (or in the report);
+//   - and a6_grade must exit with 0 within a time bound, having written a valid results.json
+//     that is its own (not one the submission planted).
+//
+// Each case is its own ctest entry (--gtest_filter), so they run in parallel. The table of cases
+// and the scores they get is in docs/instructor.md, "Hostile submissions".
+#include <archive.h>
+#include <archive_entry.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "rubric.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using a6::grader::Rubric;
+using a6::grader::RubricItem;
+using nlohmann::json;
+
+const std::vector<std::string> kTaskFiles = {"spring.cpp",          "forces.cpp",
+                                             "time_stepping.cpp",   "cloth.cpp",
+                                             "particle_system.cpp", "joints.cpp"};
+const fs::path kSource = A6_SOURCE_DIR;
+const fs::path kFixtures = kSource / "tests" / "grader" / "submissions";
+const char* const kMarker = "a6_hostile_was_here";  // what write_files tries to leave behind
+
+std::string readAll(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void writeAll(const fs::path& file, const std::string& text) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file, std::ios::binary) << text;
+}
+
+std::string replaceAll(std::string s, const std::string& from, const std::string& to) {
+  for (std::size_t at = 0; (at = s.find(from, at)) != std::string::npos; at += to.size()) {
+    s.replace(at, from.size(), to);
+  }
+  return s;
+}
+
+// This case's folder, inside the build tree (ctest's working directory), emptied.
+fs::path caseDir(const std::string& name) {
+  const fs::path dir = fs::absolute("hostile_out") / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// ---- running a6_grade ---------------------------------------------------------------------------
+
+struct Graded {
+  int status = -1;
+  double seconds = 0;
+  std::string output;  // stdout and stderr
+  json results;        // results.json (null when missing or invalid)
+  fs::path out;
+};
+
+Graded grade(const fs::path& submission, const fs::path& out, const fs::path& rubric) {
+  Graded g;
+  g.out = out;
+  const std::string command = std::string(A6_GRADE_COMMAND) + " '" + submission.string() +
+                              "' --out '" + out.string() + "' --rubric '" + rubric.string() +
+                              "' --quiet 2>&1";
+  const auto start = std::chrono::steady_clock::now();
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return g;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) g.output.append(buffer, n);
+  const int raw = pclose(pipe);
+  g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  g.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  g.results = json::parse(readAll(out / "results.json"), nullptr, false);
+  if (g.results.is_discarded()) g.results = nullptr;
+  return g;
+}
+
+// ---- submissions --------------------------------------------------------------------------------
+
+// The fixture's text as graded: @A6_SOURCE_DIR@ becomes the repository's path (so that the
+// attacks aim at the real solution and goldens).
+std::string substituted(const fs::path& file) {
+  return replaceAll(readAll(file), "@A6_SOURCE_DIR@", kSource.string());
+}
+
+// A submission folder: the solution's six files, the starter's for the tasks in `starter`, then
+// the fixture's task files over them (a link stays a link, made absolute), without `omit`.
+fs::path stage(const fs::path& dir, const std::string& fixture, const std::set<int>& starter = {},
+               const std::vector<std::string>& omit = {}) {
+  fs::create_directories(dir);
+  for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {
+    const std::string& file = kTaskFiles[i];
+    const char* from = starter.count(static_cast<int>(i + 1)) ? "starter" : "solution";
+    fs::copy_file(kSource / from / file, dir / file, fs::copy_options::overwrite_existing);
+  }
+  if (!fixture.empty()) {
+    const fs::path source = kFixtures / fixture;
+    EXPECT_TRUE(fs::is_directory(source)) << source;
+    for (const std::string& file : kTaskFiles) {
+      const fs::path f = source / file;
+      if (fs::is_symlink(f)) {
+        fs::remove(dir / file);
+        fs::create_symlink(fs::canonical(f), dir / file);
+      } else if (fs::exists(f)) {
+        writeAll(dir / file, substituted(f));
+      }
+    }
+  }
+  for (const std::string& file : omit) fs::remove(dir / file);
+  return dir;
+}
+
+// The default rubric, or a copy with every time limit cut to `seconds` (for the cases whose code
+// never returns: the correct checks take well under a tenth of a second each).
+fs::path rubricFor(const fs::path& dir, double seconds = 0) {
+  const fs::path standard = A6_DEFAULT_RUBRIC;
+  if (seconds <= 0) return standard;
+  const std::regex limit("^time_limit *= *[0-9.]+", std::regex::multiline);
+  const fs::path fast = dir / "fast_rubric.toml";
+  writeAll(fast,
+           std::regex_replace(readAll(standard), limit, "time_limit = " + std::to_string(seconds)));
+  return fast;
+}
+
+// ---- what a result must be ----------------------------------------------------------------------
+
+// An item's name in results.json is "<rubric item name> (p/n checks)".
+std::map<std::string, const json*> itemsByName(const json& results) {
+  std::map<std::string, const json*> items;
+  if (!results.is_object() || !results.contains("tests")) return items;
+  for (const json& t : results["tests"]) {
+    std::string name = t.value("name", "");
+    const std::size_t at = name.rfind(" (");
+    if (at != std::string::npos) name.resize(at);
+    items[name] = &t;
+  }
+  return items;
+}
+
+// Only GoogleTest physics checks (suites Task1Spring ... Task6Joints), no images.
+bool physicsOnly(const RubricItem& item) {
+  return std::all_of(item.tests.begin(), item.tests.end(),
+                     [](const std::string& glob) { return glob.rfind("Task", 0) == 0; });
+}
+
+std::string describe(const Graded& g) {
+  std::ostringstream out;
+  out << "a6_grade exited with " << g.status << " after " << g.seconds << " s; it printed:\n"
+      << g.output.substr(0, 4000);
+  if (g.results.is_object()) out << "\nresults.json output:\n" << g.results.value("output", "");
+  return out.str();
+}
+
+// Valid results.json of a completed run, written by the grader.
+void expectValidResults(const Graded& g, double maxSeconds) {
+  EXPECT_EQ(g.status, 0) << describe(g);
+  EXPECT_LT(g.seconds, maxSeconds) << describe(g);
+  ASSERT_TRUE(g.results.is_object()) << "no valid results.json\n" << describe(g);
+  ASSERT_TRUE(g.results.contains("score") && g.results["score"].is_number()) << g.results;
+  ASSERT_TRUE(g.results.contains("tests") && g.results["tests"].is_array()) << g.results;
+  EXPECT_FALSE(g.results["tests"].empty());
+  for (const json& t : g.results["tests"]) {
+    EXPECT_TRUE(t.contains("name") && t.contains("score") && t.contains("max_score") &&
+                t.contains("status"))
+        << t;
+  }
+  EXPECT_EQ(g.results["extra_data"]["errors"], json::array())
+      << "a grader error, not a submission problem\n"
+      << describe(g);
+  const std::string output = g.results.value("output", "");
+  EXPECT_EQ(output.find("FAKE"), std::string::npos) << "a planted results.json\n" << output;
+  EXPECT_EQ(output.find("grading did not finish"), std::string::npos) << output;
+}
+
+// The score a submission that breaks `broken` deserves: compared item by item with the rubric
+// (physics items: full points outside `broken`, nothing inside) and with its twin (the solution
+// with the starter's files for `broken`), whose score is the honest one for the image items too.
+// `exact`: the broken files behave as the starter's (they return zero), so every item scores as
+// the twin's; otherwise (they crash, throw, loop, return NaN) no item scores more than the
+// twin's: an image whose scene crashes fails all its frames, even those a stub draws right.
+void expectHonestScore(const Graded& g, const Rubric& rubric, const std::set<int>& broken,
+                       const Graded* twin, bool exact) {
+  ASSERT_TRUE(rubric.ok()) << rubric.error;
+  const auto items = itemsByName(g.results);
+  const auto twinItems = twin != nullptr ? itemsByName(twin->results) : items;
+  double full = 0, bound = 0;
+  for (const RubricItem& item : rubric.items) {
+    full += item.points;
+    if (!broken.count(item.task)) bound += item.points;
+    const auto found = items.find(item.name);
+    ASSERT_NE(found, items.end()) << "no item '" << item.name << "' in results.json";
+    const double score = (*found->second)["score"].get<double>();
+    const std::string where = "item '" + item.name + "' (task " + std::to_string(item.task) + ")";
+    if (physicsOnly(item)) {
+      EXPECT_DOUBLE_EQ(score, broken.count(item.task) ? 0.0 : item.points)
+          << where << "\n"
+          << (*found->second)["output"].get<std::string>().substr(0, 3000);
+    }
+    if (twin != nullptr) {
+      const auto other = twinItems.find(item.name);
+      ASSERT_NE(other, twinItems.end()) << "no item '" << item.name << "' in the twin's results";
+      const double honest = (*other->second)["score"].get<double>();
+      if (exact) {
+        EXPECT_DOUBLE_EQ(score, honest)
+            << where << ": the twin (the starter's code for the broken tasks) got another score\n"
+            << (*found->second)["output"].get<std::string>().substr(0, 3000);
+      } else {
+        EXPECT_LE(score, honest + 1e-9)
+            << where << ": more than the twin (the starter's code for the broken tasks)\n"
+            << (*found->second)["output"].get<std::string>().substr(0, 3000);
+      }
+    } else {
+      EXPECT_DOUBLE_EQ(score, item.points)
+          << where << "\n"
+          << (*found->second)["output"].get<std::string>().substr(0, 3000);
+    }
+  }
+  const double total = g.results["score"].get<double>();
+  EXPECT_LE(total, bound + 1e-9) << "more than the points of the tasks it does not break";
+  if (twin != nullptr && exact) {
+    EXPECT_DOUBLE_EQ(total, twin->results["score"].get<double>()) << describe(g);
+  } else if (twin != nullptr) {
+    EXPECT_LE(total, twin->results["score"].get<double>() + 1e-9) << describe(g);
+  } else {
+    EXPECT_DOUBLE_EQ(total, full) << describe(g);
+  }
+}
+
+// `reason` appears in what the students see for the broken tasks (the items' outputs), or, with
+// no broken task, in the top-level output or the HTML report.
+void expectReason(const Graded& g, const Rubric& rubric, const std::set<int>& broken,
+                  const std::string& reason) {
+  if (reason.empty()) return;
+  const auto items = itemsByName(g.results);
+  for (const int task : broken) {
+    std::string text;
+    for (const RubricItem& item : rubric.items) {
+      if (item.task != task || item.points <= 0 || !physicsOnly(item)) continue;
+      const auto found = items.find(item.name);
+      if (found != items.end()) text += (*found->second)["output"].get<std::string>();
+    }
+    EXPECT_NE(text.find(reason), std::string::npos)
+        << "task " << task << " does not say '" << reason << "':\n"
+        << text.substr(0, 3000);
+  }
+  if (broken.empty()) {
+    const std::string text = g.results.value("output", "") + readAll(g.out / "report.html");
+    EXPECT_NE(text.find(reason), std::string::npos) << "'" << reason << "' not in the report";
+  }
+}
+
+struct Case {
+  Case(std::set<int> brokenTasks, std::string why, double seconds = 120, double limit = 0,
+       std::vector<std::string> left = {})
+      : broken(std::move(brokenTasks)),
+        reason(std::move(why)),
+        maxSeconds(seconds),
+        timeLimit(limit),
+        omit(std::move(left)) {}
+  /// The broken files crash, throw, loop or return NaN rather than return what a stub does.
+  Case& crashes() {
+    exact = false;
+    return *this;
+  }
+  std::set<int> broken;           // tasks that honestly earn what the starter's code earns
+  std::string reason;             // what the broken tasks' items (or the report) must say
+  double maxSeconds;              // a6_grade must be done within this (for the case, not its twin)
+  double timeLimit;               // > 0: every rubric time limit cut to this, s
+  std::vector<std::string> omit;  // task files left out of the submission
+  bool exact = true;              // every item scores exactly as the twin's (see crashes())
+};
+
+struct Outcome {
+  Graded graded;
+  Rubric rubric;
+  fs::path dir;
+};
+
+// Grades `submission` (already staged, or an archive), and its twin when it breaks a task, and
+// checks everything every case must satisfy.
+Outcome check(const std::string& name, const fs::path& dir, const fs::path& submission,
+              const Case& c) {
+  Outcome o;
+  o.dir = dir;
+  const fs::path rubricFile = rubricFor(dir, c.timeLimit);
+  o.rubric = a6::grader::loadRubric(rubricFile);
+  EXPECT_TRUE(o.rubric.ok()) << o.rubric.error;
+  o.graded = grade(submission, dir / "out", rubricFile);
+  std::printf("[ hostile  ] %s: score %s in %.1f s\n", name.c_str(),
+              o.graded.results.is_object() ? o.graded.results["score"].dump().c_str() : "none",
+              o.graded.seconds);
+  expectValidResults(o.graded, c.maxSeconds);
+  if (::testing::Test::HasFatalFailure()) return o;
+  Graded twin;
+  if (!c.broken.empty()) {
+    twin = grade(stage(dir / "twin", "", c.broken), dir / "twin_out", rubricFile);
+    expectValidResults(twin, 300);
+    if (::testing::Test::HasFatalFailure()) return o;
+  }
+  expectHonestScore(o.graded, o.rubric, c.broken, c.broken.empty() ? nullptr : &twin, c.exact);
+  expectReason(o.graded, o.rubric, c.broken, c.reason);
+  return o;
+}
+
+// A fixture folder staged over the solution, graded and checked.
+Outcome checkFixture(const std::string& name, const Case& c) {
+  const fs::path dir = caseDir(name);
+  return check(name, dir, stage(dir / "submission", name, {}, c.omit), c);
+}
+
+// Processes still running whose program lies under `dir` (a probe and what it forked).
+std::vector<std::string> processesUnder(const fs::path& dir) {
+  std::vector<std::string> found;
+  std::error_code ec;
+  for (fs::directory_iterator it("/proc", ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string pid = it->path().filename().string();
+    if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::error_code lec;
+    const std::string exe = fs::read_symlink(it->path() / "exe", lec).string();
+    std::string cmdline = readAll(it->path() / "cmdline");
+    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
+    if (exe.rfind(dir.string(), 0) == 0 || cmdline.rfind(dir.string(), 0) == 0) {
+      found.push_back(pid + " " + exe + " " + cmdline);
+    }
+  }
+  return found;
+}
+
+void expectNoProcessLeft(const fs::path& dir) {
+  // The grader kills what is left before it exits; give the kernel a moment to reap.
+  std::vector<std::string> left;
+  for (int k = 0; k < 20; ++k) {
+    left = processesUnder(dir);
+    if (left.empty()) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  std::string list;
+  for (const std::string& p : left) {
+    list += p + "\n";
+    kill(static_cast<pid_t>(std::stol(p)), SIGKILL);  // do not leave them to the next test
+  }
+  ADD_FAILURE() << "processes of the submission outlived a6_grade:\n" << list;
+}
+
+// The grader's out folder holds only what the grader writes: results.json, report.html and its
+// scratch folder, whose probe folders are removed when the probes end.
+void expectOnlyGraderFiles(const fs::path& out) {
+  for (const auto& entry : fs::directory_iterator(out)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name == "results.json" || name == "report.html" || name == "work")
+        << "unexpected " << entry.path();
+  }
+  for (const fs::path& run : {out / "work" / "run", out / "work" / "startup"}) {
+    if (!fs::exists(run)) continue;
+    for (const auto& entry : fs::directory_iterator(run)) {
+      if (entry.path().filename().string().rfind("probe-", 0) == 0) {
+        ADD_FAILURE() << "a probe's working folder was not removed: " << entry.path();
+      }
+    }
+  }
+}
+
+// ---- archives -----------------------------------------------------------------------------------
+
+struct Entry {
+  enum class Type { File, Symlink, Hardlink };
+  Entry(std::string p, std::string d) : path(std::move(p)), data(std::move(d)) {}
+  Entry(std::string p, Type t, std::string target)
+      : path(std::move(p)), type(t), link(std::move(target)) {}
+  std::string path;
+  std::string data;
+  Type type = Type::File;
+  std::string link;
+};
+
+void writeArchive(const fs::path& out, bool zip, const std::vector<Entry>& entries) {
+  archive* a = archive_write_new();
+  if (zip) {
+    archive_write_set_format_zip(a);
+  } else {
+    archive_write_set_format_pax_restricted(a);
+    archive_write_add_filter_gzip(a);
+  }
+  ASSERT_EQ(archive_write_open_filename(a, out.c_str()), ARCHIVE_OK) << archive_error_string(a);
+  for (const Entry& e : entries) {
+    archive_entry* entry = archive_entry_new();
+    archive_entry_set_pathname(entry, e.path.c_str());
+    archive_entry_set_perm(entry, 0644);
+    archive_entry_set_mtime(entry, 1700000000, 0);
+    if (e.type == Entry::Type::Symlink) {
+      archive_entry_set_filetype(entry, AE_IFLNK);
+      archive_entry_set_symlink(entry, e.link.c_str());
+    } else if (e.type == Entry::Type::Hardlink) {
+      archive_entry_set_filetype(entry, AE_IFREG);
+      archive_entry_set_hardlink(entry, e.link.c_str());
+      archive_entry_set_size(entry, 0);
+    } else {
+      archive_entry_set_filetype(entry, AE_IFREG);
+      archive_entry_set_size(entry, static_cast<la_int64_t>(e.data.size()));
+    }
+    ASSERT_GE(archive_write_header(a, entry), ARCHIVE_WARN) << archive_error_string(a);
+    if (e.type == Entry::Type::File && !e.data.empty()) {
+      ASSERT_EQ(archive_write_data(a, e.data.data(), e.data.size()),
+                static_cast<la_ssize_t>(e.data.size()));
+    }
+    archive_entry_free(entry);
+  }
+  ASSERT_EQ(archive_write_close(a), ARCHIVE_OK) << archive_error_string(a);
+  archive_write_free(a);
+}
+
+// An archive whose spring.cpp (the solution's) only comes with paths that leave it: relative
+// ('..'), through a folder ('sub/../..'), and absolute. The other five files are the solution's.
+void checkTraversal(const std::string& name, bool zip) {
+  const fs::path dir = caseDir(name);
+  const std::string spring = readAll(kSource / "solution" / "spring.cpp");
+  std::vector<Entry> entries = {{"../spring.cpp", spring},
+                                {"sub/../../spring.cpp", spring},
+                                {"../../../../a6_traversal_spring.cpp", spring},
+                                {"/tmp/a6_traversal_abs/spring.cpp", spring}};
+  for (const std::string& file : kTaskFiles) {
+    if (file != "spring.cpp") entries.push_back({file, readAll(kSource / "solution" / file)});
+  }
+  const fs::path archive = dir / (zip ? "traversal.zip" : "traversal.tar.gz");
+  writeArchive(archive, zip, entries);
+  if (::testing::Test::HasFatalFailure()) return;
+  fs::remove_all("/tmp/a6_traversal_abs");
+
+  const Outcome o = check(name, dir, archive, {{1}, ""});
+  const std::string output = o.graded.results.value("output", "");
+  EXPECT_NE(output.find("Not found (the starter code was used): spring.cpp"), std::string::npos)
+      << output;
+  EXPECT_NE(output.find(".."), std::string::npos) << "the refused entries are noted\n" << output;
+  // Nothing landed where the entries point.
+  for (const fs::path& p :
+       {dir / "out" / "work" / "spring.cpp", dir / "out" / "spring.cpp", dir / "spring.cpp",
+        dir.parent_path() / "a6_traversal_spring.cpp", fs::path("/tmp/a6_traversal_abs")}) {
+    EXPECT_FALSE(fs::exists(p)) << p << " was written";
+  }
+  for (fs::path p = dir; p != p.root_path(); p = p.parent_path()) {
+    EXPECT_FALSE(fs::exists(p / "a6_traversal_spring.cpp")) << p;
+  }
+}
+
+// ---- the cases ----------------------------------------------------------------------------------
+
+// Printing or planting results changes nothing.
+TEST(Hostile, FakeResults) {
+  const bool hadAutograder = fs::exists("/autograder");
+  const Outcome o = checkFixture("fake_results", {{1}, "actual:   (0, 0)"});
+  expectOnlyGraderFiles(o.dir / "out");
+  const std::string results = readAll(o.dir / "out" / "results.json");
+  EXPECT_EQ(results.find("FAKE"), std::string::npos) << "the planted results.json is in place";
+  if (!hadAutograder) {
+    EXPECT_FALSE(fs::exists("/autograder")) << "the probe created /autograder";
+    fs::remove_all("/autograder");
+  }
+}
+
+TEST(Hostile, FakeTestOutput) {
+  const Outcome o = checkFixture("fake_gtest_lines", {{1}, "actual:   (0, 0)"});
+  // What it printed is in the report, for the instructor, and changed nothing.
+  EXPECT_NE(readAll(o.dir / "out" / "report.html").find("A6-SUMMARY 1:14:0"), std::string::npos);
+}
+
+// Code before main: the file that holds it costs its own task, as a file that does not compile.
+TEST(Hostile, ExitBeforeMain) {
+  checkFixture("static_exit", {{1}, "did not start: the probe crashed: exited with 0"});
+}
+
+TEST(Hostile, AbortBeforeMain) {
+  checkFixture("static_abort", {{1}, "did not start: the probe crashed: killed by SIGABRT"});
+}
+
+TEST(Hostile, EndlessLoopBeforeMain) {
+  checkFixture("static_infinite_loop", {{1}, "did not reach main within", 120});
+}
+
+TEST(Hostile, WritesFilesEverywhere) {
+  const fs::path dir = fs::absolute("hostile_out") / "write_files";
+  std::vector<fs::path> places = {kSource,
+                                  kSource / "solution",
+                                  kSource / "tests" / "golden",
+                                  "/tmp",
+                                  "/var/tmp",
+                                  "/dev/shm",
+                                  "/run/lock",
+                                  "/root",
+                                  "/autograder/results",
+                                  "/",
+                                  dir / "out",
+                                  dir / "out" / "work",
+                                  dir / "out" / "work" / "run"};
+  for (fs::path p = dir; p != p.root_path(); p = p.parent_path()) places.push_back(p);
+  std::error_code ec;
+  for (const fs::path& p : places) fs::remove(p / kMarker, ec);  // from an earlier run
+
+  const Outcome o = checkFixture("write_files", {{}, "could not write /tmp/a6_hostile_was_here"});
+  for (const fs::path& p : places) EXPECT_FALSE(fs::exists(p / kMarker)) << p / kMarker;
+  for (const auto& entry : fs::recursive_directory_iterator(o.dir / "out")) {
+    EXPECT_NE(entry.path().filename(), kMarker) << entry.path();
+  }
+  expectOnlyGraderFiles(o.dir / "out");
+  // The probe said what it could not do; it could write only in its own working directory.
+  const std::string report = readAll(o.dir / "out" / "report.html");
+  EXPECT_NE(report.find("hostile: WROTE ./a6_hostile_was_here"), std::string::npos);
+  EXPECT_EQ(report.find("hostile: WROTE ./.."), std::string::npos);
+  EXPECT_EQ(report.find("hostile: WROTE /"), std::string::npos);
+}
+
+// The solution and the goldens cannot be reached, at compile time or at run time.
+TEST(Hostile, IncludesTheSolution) { checkFixture("include_solution", {{1}, "actual:   (0, 0)"}); }
+
+TEST(Hostile, IncludesTheGoldens) { checkFixture("include_goldens", {{1}, "actual:   (0, 0)"}); }
+
+TEST(Hostile, OpensTheSolutionAndTheGoldens) {
+  const Outcome o = checkFixture("fopen_secrets", {{1}, "actual:   (0, 0)"});
+  const std::string report = readAll(o.dir / "out" / "report.html");
+  EXPECT_NE(report.find("hostile: could not read " + kSource.string() + "/solution/spring.cpp"),
+            std::string::npos);
+  EXPECT_EQ(report.find("hostile: READ"), std::string::npos);
+}
+
+TEST(Hostile, EndlessLoop) {
+  // Every time limit cut to 3 s (the correct checks take a few hundredths each): each check
+  // of task 1 (and each image that runs the spring) waits that long once.
+  checkFixture("infinite_loop", Case({1}, "time limit", 300, 3).crashes());
+}
+
+TEST(Hostile, ForksInItsCode) {
+  const Outcome o = checkFixture("fork_in_code", {{}, ""});
+  expectNoProcessLeft(o.dir);
+}
+
+TEST(Hostile, ForkBombBeforeMain) {
+  const Outcome o = checkFixture("fork_bomb", {{}, "hostile: fork bomb over"});
+  expectNoProcessLeft(o.dir);
+}
+
+TEST(Hostile, ChildEscapesTheProcessGroup) {
+  const Outcome o = checkFixture("fork_escape", {{}, "hostile: forked"});
+  expectNoProcessLeft(o.dir);
+}
+
+TEST(Hostile, HugeAllocation) { checkFixture("huge_alloc", Case({1}, "bad_alloc").crashes()); }
+
+TEST(Hostile, HugeOutput) {
+  const Outcome o = checkFixture("huge_output", {{}, "", 90});
+  // Capped: the report keeps 64 KiB of what was printed; nothing large was written.
+  EXPECT_LT(fs::file_size(o.dir / "out" / "results.json"), 1u << 20);
+  EXPECT_LT(fs::file_size(o.dir / "out" / "report.html"), 4u << 20);
+  const std::string report = readAll(o.dir / "out" / "report.html");
+  EXPECT_LT(std::count(report.begin(), report.end(), 'A'), 80000);
+  std::uintmax_t written = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(o.dir / "out")) {
+    if (entry.is_regular_file() && entry.path().extension() != ".o" &&
+        entry.path().filename() != "a6_probe") {
+      written += entry.file_size();
+    }
+  }
+  EXPECT_LT(written, 8u << 20) << "bytes written besides the objects and the probe";
+}
+
+TEST(Hostile, Segfault) {
+  checkFixture("segfault", Case({1}, "the probe crashed: killed by SIGSEGV").crashes());
+}
+
+TEST(Hostile, NaN) { checkFixture("nan", Case({1}, "actual:   (nan, nan)").crashes()); }
+
+TEST(Hostile, ThrowsAnException) {
+  checkFixture("exception", Case({1}, "hostile: thrown from computeForce").crashes());
+}
+
+TEST(Hostile, ExitsInItsCode) {
+  checkFixture("exit_in_code", Case({1}, "the probe crashed: exited with 0").crashes());
+}
+
+TEST(Hostile, WritesOnTheAnswerPipe) {
+  checkFixture("garbage_on_answer_pipe", Case({1}, "garbage from the probe").crashes());
+}
+
+// Broken, not hostile.
+TEST(Broken, CompileErrorInOneFile) {
+  checkFixture("compile_error", {{2}, "forces.cpp did not compile"});
+}
+
+TEST(Broken, MissingFile) {
+  checkFixture("missing_file",
+               {{4}, "cloth.cpp missing from the submission", 120, 0, {"cloth.cpp"}});
+}
+
+// Archives and links.
+TEST(Hostile, ZipWithPathTraversal) { checkTraversal("zip_traversal", true); }
+
+TEST(Hostile, TarWithPathTraversal) { checkTraversal("tar_traversal", false); }
+
+TEST(Hostile, SymlinkInTheFolderToTheSolution) {
+  ASSERT_TRUE(fs::is_symlink(kFixtures / "symlink_folder" / "spring.cpp"));
+  const Outcome o = checkFixture("symlink_folder", {{1}, ""});
+  const std::string output = o.graded.results.value("output", "");
+  EXPECT_NE(output.find("Not found (the starter code was used): spring.cpp"), std::string::npos)
+      << output;
+  EXPECT_NE(output.find("link"), std::string::npos) << "the refused link is noted\n" << output;
+}
+
+TEST(Hostile, LinksInTheArchiveToTheSolution) {
+  const fs::path dir = caseDir("symlink_archive");
+  std::vector<Entry> entries = {
+      {"spring.cpp", Entry::Type::Symlink, (kSource / "solution" / "spring.cpp").string()},
+      {"forces.cpp", Entry::Type::Hardlink, (kSource / "solution" / "forces.cpp").string()}};
+  for (const std::string& file : kTaskFiles) {
+    if (file != "spring.cpp" && file != "forces.cpp") {
+      entries.push_back({file, readAll(kSource / "solution" / file)});
+    }
+  }
+  writeArchive(dir / "links.tar.gz", false, entries);
+  if (HasFatalFailure()) return;
+  const Outcome o = check("symlink_archive", dir, dir / "links.tar.gz", {{1, 2}, ""});
+  const std::string output = o.graded.results.value("output", "");
+  EXPECT_NE(output.find("Not found (the starter code was used): spring.cpp, forces.cpp"),
+            std::string::npos)
+      << output;
+}
+
+// Every fixture folder is graded by a case above.
+TEST(Hostile, EveryFixtureHasACase) {
+  const std::set<std::string> graded = {"fake_results",
+                                        "fake_gtest_lines",
+                                        "static_exit",
+                                        "static_abort",
+                                        "static_infinite_loop",
+                                        "write_files",
+                                        "include_solution",
+                                        "include_goldens",
+                                        "fopen_secrets",
+                                        "infinite_loop",
+                                        "fork_in_code",
+                                        "fork_bomb",
+                                        "fork_escape",
+                                        "huge_alloc",
+                                        "huge_output",
+                                        "segfault",
+                                        "nan",
+                                        "exception",
+                                        "exit_in_code",
+                                        "garbage_on_answer_pipe",
+                                        "compile_error",
+                                        "missing_file",
+                                        "symlink_folder"};
+  for (const auto& entry : fs::directory_iterator(kFixtures)) {
+    if (entry.is_directory()) {
+      EXPECT_TRUE(graded.count(entry.path().filename().string())) << entry.path();
+    }
+  }
+  for (const std::string& name : graded) EXPECT_TRUE(fs::is_directory(kFixtures / name)) << name;
+}
+
+}  // namespace
