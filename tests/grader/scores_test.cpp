@@ -3,10 +3,11 @@
 //   - the starter: nothing;
 //   - every wrong version under tests/wrong/ (the solution with the files of its folder in place
 //     of the solution's): it loses points in exactly the tasks its EXPECT file names ("fail: 3"),
-//     and keeps every point of every other task, except (kImagesMayCrossTasks) the points of
-//     golden images whose scene runs the wrong task's code (the manifest's "tasks": the cloth
-//     images run the spring, the forces and the stepper). No physics check of another task may
-//     fail: the suite checks each task with the reference models of the others;
+//     and keeps every point of every other task. Golden images whose scene runs the wrong task's
+//     code (the manifest's "tasks": the cloth images run the spring, the forces and the stepper)
+//     may fail (kImagesMayCrossTasks): the default rubric makes them feedback without points. No
+//     physics check of another task may fail: the suite checks each task with the reference
+//     models of the others;
 //   - the same submission graded twice: the same results.json, timing fields aside.
 //
 // Each wrong version is its own ctest entry (grader_scores_wrong_<name>), so they run in parallel.
@@ -43,7 +44,7 @@ const fs::path kSource = A6_SOURCE_DIR;
 // "tasks", so a mistake in one of them can fail it, and its points are charged to the image's
 // own task. The issue asks for a mistake to cost its own task only: false makes the test hold
 // the grader to that (it fails while images charge across tasks).
-constexpr bool kImagesMayCrossTasks = false;
+constexpr bool kImagesMayCrossTasks = true;
 
 std::string readAll(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -238,7 +239,6 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
   std::printf("[ scores   ] %s (fail: %s): score %s; per task%s\n", name.c_str(), named.c_str(),
               g.results["score"].dump().c_str(), table.str().c_str());
   // Which checks failed outside the wrong tasks, and whether an image may.
-  std::set<int> crossed;  // other tasks that lost image points
   for (const auto& [check, outcome] : g.results["extra_data"]["tests"].items()) {
     if (outcome != "failed") continue;
     const int task = taskOfCheck(check);
@@ -248,7 +248,8 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
                                std::any_of(failing.begin(), failing.end(),
                                            [&](int t) { return image->second.count(t) != 0; });
     if (kImagesMayCrossTasks && runsWrongCode) {
-      crossed.insert(task);
+      // Allowed as feedback, but the task's points are still checked below: the default rubric
+      // gives the images of tasks 1-5 no points, so the task must keep all of them.
       std::printf("[ scores   ]   %s fails the image %s of task %d, whose scene runs its code\n",
                   name.c_str(), check.c_str(), task);
       continue;
@@ -258,7 +259,7 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
                   << g.results.dump(2).substr(0, 8000);
   }
   for (const auto& [task, points] : full) {
-    if (task == 0 || crossed.count(task)) continue;
+    if (task == 0) continue;
     if (failing.count(task)) {
       EXPECT_LT(got.at(task), points) << name << " must lose points in task " << task << "\n"
                                       << summary(g);
