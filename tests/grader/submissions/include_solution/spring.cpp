@@ -45,9 +45,6 @@
 #elif __has_include("../../../../../../../../../../../../solution/spring.cpp")
 #include "../../../../../../../../../../../../solution/spring.cpp"
 #define A6_HOSTILE_LEAKED 1
-#elif __has_include("/work/main/solution/spring.cpp")
-#include "/work/main/solution/spring.cpp"
-#define A6_HOSTILE_LEAKED 1
 #elif __has_include(<solution/spring.cpp>)
 #include <solution/spring.cpp>
 #define A6_HOSTILE_LEAKED 1
