@@ -95,6 +95,14 @@ TEST(Task1Spring, DampingUsesRelativeVelocity) {
       << input(r) << hint("damping depends on v2 - v1, not on v2 alone: a spring moving rigidly feels no damping");
 }
 
+TEST(Task1Spring, DampingFollowsTheFirstParticleToo) {
+  // At rest length, p1 moving away from p2 at 2 m/s while p2 stays: e = (1, 0), v1 = (-2, 0),
+  // v_rel = (v2 - v1)·e = 2, so f = -3 * 2 * e = (-6, 0).
+  const auto r = spring(Vec2(0, 0), Vec2(1, 0), 1.0, 100, 3, Vec2(-2, 0), Vec2(0, 0));
+  EXPECT_VEC_NEAR(forceOf(r), Vec2(-6, 0), 1e-12)
+      << input(r) << hint("v_rel = (v2 - v1)·e: when p1 moves away, the spring is separating too");
+}
+
 TEST(Task1Spring, DampingActsOnlyAlongTheSpring) {
   // p2 moves perpendicular to the spring: v_rel = 0, so no force at all.
   const auto r = spring(Vec2(0, 0), Vec2(1, 0), 1.0, 100, 3, Vec2(0, 0), Vec2(0, 4));
