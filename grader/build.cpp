@@ -48,39 +48,6 @@ fs::path absoluteClean(const fs::path& p) {
   return (ec ? fs::absolute(p) : c).lexically_normal();
 }
 
-bool isWithin(const fs::path& inner, const fs::path& outer) {
-  auto o = outer.begin(), i = inner.begin();
-  for (; o != outer.end(); ++o, ++i) {
-    if (o->empty()) continue;  // a trailing separator
-    if (i == inner.end() || *i != *o) return false;
-  }
-  return true;
-}
-
-// Adds to `out` what to hide so that `secret` cannot be read except the `keep` paths within
-// it: the secret itself when nothing in it is kept, otherwise its other entries, level by level
-// down to what is kept. (The kept paths' ancestors stay visible, their other entries covered.)
-void hideExcept(const fs::path& secret, const std::vector<fs::path>& keep,
-                std::vector<fs::path>& out, int depth = 0) {
-  std::vector<fs::path> inside;
-  for (const fs::path& k : keep) {
-    if (isWithin(secret, k)) return;  // the secret lies inside something kept visible
-    if (isWithin(k, secret)) inside.push_back(k);
-  }
-  std::error_code ec;
-  const fs::file_status st = fs::symlink_status(secret, ec);
-  // A link is not covered itself (that would cover its target): what it points to is either a
-  // secret of its own or harmless.
-  if (ec || !fs::exists(st) || fs::is_symlink(st)) return;
-  if (inside.empty() || !fs::is_directory(st) || depth > 64) {
-    out.push_back(secret);
-    return;
-  }
-  for (fs::directory_iterator it(secret, ec), end; !ec && it != end; it.increment(ec)) {
-    hideExcept(it->path(), inside, out, depth + 1);
-  }
-}
-
 // ---- reading what the compiler and the linker said ----
 
 std::string replaceAll(std::string s, const std::string& from, const std::string& to) {

@@ -200,38 +200,7 @@ class BudgetedStudent final : public harness::StudentCode {
 
 BudgetedStudent* gStudent = nullptr;
 
-// True when `inner` is `outer` or lies inside it (both absolute and normal).
-bool isWithin(const fs::path& inner, const fs::path& outer) {
-  auto i = inner.begin();
-  for (auto o = outer.begin(); o != outer.end(); ++o, ++i) {
-    if (o->empty()) break;  // a trailing slash
-    if (i == inner.end() || *i != *o) return false;
-  }
-  return true;
-}
-
-// What the probe must not see: every secret (the source and build trees), except the paths it
-// needs (its work folder), which may lie inside one: then the secret's other entries are hidden,
-// down to the kept path. Links are not covered (that would cover their targets).
-void hideExcept(const fs::path& secret, const std::vector<fs::path>& keep,
-                std::vector<fs::path>& out, int depth = 0) {
-  std::vector<fs::path> inside;
-  for (const fs::path& k : keep) {
-    if (isWithin(secret, k)) return;
-    if (isWithin(k, secret)) inside.push_back(k);
-  }
-  std::error_code ec;
-  const fs::file_status status = fs::symlink_status(secret, ec);
-  if (ec || !fs::exists(status) || fs::is_symlink(status)) return;
-  if (inside.empty() || !fs::is_directory(status) || depth > 64) {
-    out.push_back(secret);
-    return;
-  }
-  for (fs::directory_iterator it(secret, ec), end; !ec && it != end; it.increment(ec)) {
-    hideExcept(it->path(), inside, out, depth + 1);
-  }
-}
-
+#ifdef A6_GRADE_HAVE_PROBE
 std::vector<fs::path> hiddenFromProbe(const std::vector<fs::path>& secrets, const fs::path& work) {
   std::vector<fs::path> hide;
   for (const fs::path& secret : secrets) {
@@ -249,6 +218,7 @@ std::vector<fs::path> hiddenFromProbe(const std::vector<fs::path>& secrets, cons
   hide.erase(std::unique(hide.begin(), hide.end()), hide.end());
   return hide;
 }
+#endif
 
 #ifdef A6_GRADE_HAVE_PROBE
 // Whether a probe reaches main and serves: "" when it answers, twice, a request that runs no

@@ -983,4 +983,36 @@ Exit SandboxedProcess::stop() {
   return exit;
 }
 
+bool isWithin(const std::filesystem::path& inner, const std::filesystem::path& outer) {
+  auto o = outer.begin(), i = inner.begin();
+  for (; o != outer.end(); ++o, ++i) {
+    if (o->empty()) continue;  // a trailing separator
+    if (i == inner.end() || *i != *o) return false;
+  }
+  return true;
+}
+
+void hideExcept(const std::filesystem::path& secret,
+                const std::vector<std::filesystem::path>& keep,
+                std::vector<std::filesystem::path>& out, int depth) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> inside;
+  for (const fs::path& k : keep) {
+    if (isWithin(secret, k)) return;  // the secret lies inside something kept visible
+    if (isWithin(k, secret)) inside.push_back(k);
+  }
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(secret, ec);
+  // A link is not covered itself (that would cover its target): what it points to is either a
+  // secret of its own or harmless.
+  if (ec || !fs::exists(st) || fs::is_symlink(st)) return;
+  if (inside.empty() || !fs::is_directory(st) || depth > 64) {
+    out.push_back(secret);
+    return;
+  }
+  for (fs::directory_iterator it(secret, ec), end; !ec && it != end; it.increment(ec)) {
+    hideExcept(it->path(), inside, out, depth + 1);
+  }
+}
+
 }  // namespace a6::grader

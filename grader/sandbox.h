@@ -111,4 +111,14 @@ class SandboxedProcess {
   State* state_ = nullptr;
 };
 
+/// True when `inner` is `outer` or lies inside it (both absolute and lexically normal).
+bool isWithin(const std::filesystem::path& inner, const std::filesystem::path& outer);
+
+/// Adds to `out` what SandboxSpec::hide needs so that `secret` cannot be read except the `keep`
+/// paths within it: the secret itself when nothing in it is kept, otherwise its other entries,
+/// level by level down to what is kept. Links are not covered (that would cover their targets).
+void hideExcept(const std::filesystem::path& secret,
+                const std::vector<std::filesystem::path>& keep,
+                std::vector<std::filesystem::path>& out, int depth = 0);
+
 }  // namespace a6::grader
