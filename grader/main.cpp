@@ -1,7 +1,7 @@
 // a6_grade: grades one submission (grader/DESIGN.md).
 //
 //   a6_grade SUBMISSION --out DIR [--rubric FILE] [--seed N] [--kit FILE] [--jobs N]
-//            [--time-budget S] [--tests FILTER] [--quiet] [--color]
+//            [--time-budget S] [--tests FILTER] [--hide PATH]... [--quiet] [--color]
 //   a6_grade --list-tests [--rubric FILE]
 //
 // Stages: intake -> build -> run the physics suite (and the golden-image checks) in this process
@@ -450,11 +450,13 @@ struct Options {
   std::string out;
   std::string rubric;
   std::string kit;
+  std::vector<std::string> hide;  // more secrets: a batch's other submissions and results
   std::optional<std::uint64_t> seed;
   int jobs = 0;
   double timeBudget = kDefaultTimeBudget;
   std::string filter;
   bool listTests = false;
+  std::string publicRubric;
   bool quiet = false;
   bool color = false;
 };
@@ -613,7 +615,8 @@ int grade(const Options& options, const Rubric& rubric) {
   std::vector<fs::path> secrets;  // what the probe must not see either
 #ifdef A6_GRADE_HAVE_BUILD
   try {
-    const Kit kit = loadKit(options.kit.empty() ? defaultKitPath() : fs::path(options.kit));
+    Kit kit = loadKit(options.kit.empty() ? defaultKitPath() : fs::path(options.kit));
+    for (const std::string& path : options.hide) kit.secrets.push_back(fs::absolute(path));
     if (!kit.ok()) {
       fail("the grader's kit is unusable: " + kit.error);
       unavailable = "the grader could not build your code (a grader problem, not yours)";
@@ -759,6 +762,11 @@ int main(int argc, char** argv) {
                  "the seed of the randomised checks (default: derived from the submission's "
                  "files); the report records it for a regrade");
   app.add_option("--kit", options.kit, "the kit description (default: BUILD/grader/kit.json)");
+  app.add_option("--hide", options.hide,
+                 "hide this folder or file from the compiler and the probe too, except this "
+                 "run's own work folder (a6_batch hides the other submissions and results); "
+                 "repeatable")
+      ->allow_extra_args(false);  // one path per --hide: never the submission after it
   app.add_option("--jobs", options.jobs,
                  "accepted for scripts that grade in batches; one grading compiles its six "
                  "files one after another")
@@ -773,6 +781,9 @@ int main(int argc, char** argv) {
                  "partial)");
   app.add_flag("--list-tests", options.listTests,
                "print every check and the rubric item it counts for, then exit");
+  app.add_option("--public-rubric", options.publicRubric,
+                 "write the rubric without its items on hidden checks (for a student release) "
+                 "to this file, then exit");
   app.add_flag("--quiet,-q", options.quiet, "no progress on stderr");
   app.add_flag("--color", options.color, "colour the summary");
   try {
@@ -791,6 +802,19 @@ int main(int argc, char** argv) {
     rubric.error = std::string("cannot load the rubric: ") + e.what();
   }
 
+  if (!options.publicRubric.empty()) {
+    if (!rubric.ok()) {
+      std::fprintf(stderr, "a6_grade: %s\n", rubric.error.c_str());
+      return 1;
+    }
+    std::ofstream out(options.publicRubric, std::ios::binary | std::ios::trunc);
+    out << publicRubricToml(rubric);
+    if (!out.flush()) {
+      std::fprintf(stderr, "a6_grade: cannot write %s\n", options.publicRubric.c_str());
+      return 1;
+    }
+    return 0;
+  }
   if (options.listTests) {
     initGoogleTest(1, options.filter);
 #ifdef A6_GRADE_HAVE_GOLDEN

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -352,6 +353,80 @@ Rubric loadRubric(const std::filesystem::path& file) {
   Rubric rubric = parseRubric(text.str(), file.string());
   rubric.file = file;
   return rubric;
+}
+
+bool RubricItem::onHiddenChecks() const {
+  if (tests.empty()) return false;
+  for (const std::string& glob : tests) {
+    const std::string suite = glob.substr(0, glob.find('.'));
+    const std::string tag = "Hidden";
+    if (suite.size() < tag.size() || suite.compare(suite.size() - tag.size(), tag.size(), tag) != 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+namespace {
+// A TOML basic string.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string number(double value) {
+  std::ostringstream out;
+  out.precision(17);
+  out << value;
+  std::string text = out.str();
+  if (text.find_first_of(".eE") == std::string::npos && text.find("inf") == std::string::npos) {
+    text += ".0";
+  }
+  return text;
+}
+}  // namespace
+
+std::string publicRubricToml(const Rubric& rubric) {
+  double total = 0;
+  for (const RubricItem& item : rubric.items) {
+    if (!item.onHiddenChecks() && !item.extraCredit) total += item.points;
+  }
+  std::ostringstream out;
+  out << "# The public rubric: the graders' rubric without the items of the hidden checks, which\n"
+         "# run only when your submission is graded. Written by a6_grade --public-rubric from "
+      << rubric.file.filename().string()
+      << ";\n# do not edit (scripts/check.sh grades your files with it).\n\n";
+  out << "title = " << quoted(rubric.title) << "\n";
+  out << "total = " << number(total) << "\n";
+  for (const RubricItem& item : rubric.items) {
+    if (item.onHiddenChecks()) continue;
+    out << "\n[[item]]\n";
+    out << "name = " << quoted(item.name) << "\n";
+    out << "task = " << item.task << "\n";
+    out << "tests = [";
+    for (std::size_t k = 0; k < item.tests.size(); ++k) out << (k ? ", " : "") << quoted(item.tests[k]);
+    out << "]\n";
+    out << "points = " << number(item.points) << "\n";
+    if (item.allOrNothing) out << "all_or_nothing = true\n";
+    if (item.extraCredit) out << "extra_credit = true\n";
+    out << "visibility = " << quoted(toString(item.visibility)) << "\n";
+    out << "time_limit = " << number(item.timeLimitSeconds) << "\n";
+  }
+  return out.str();
 }
 
 }  // namespace a6::grader

@@ -47,6 +47,9 @@ struct RubricItem {
 
   /// True when `testName` matches one of the globs (regardless of earlier items).
   bool matches(const std::string& testName) const;
+  /// True when every glob names a hidden suite (Task<N>Hidden, GoldenTask<N>Hidden): checks
+  /// that only the graders have (tests/hidden, tests/golden/hidden), never a student release.
+  bool onHiddenChecks() const;
 };
 
 struct Rubric {
@@ -67,6 +70,10 @@ struct Rubric {
 Rubric loadRubric(const std::filesystem::path& file);
 /// The same, from TOML text (`sourceName` names it in messages).
 Rubric parseRubric(const std::string& text, const std::string& sourceName);
+
+/// The rubric a student release carries: `rubric` without its items on hidden checks, its total
+/// the sum of what is left, as TOML that loadRubric reads back (every value written out).
+std::string publicRubricToml(const Rubric& rubric);
 
 /// Glob matching over a whole string: `*` matches any run of characters, `?` any one.
 bool globMatch(const std::string& pattern, const std::string& text);

@@ -13,6 +13,7 @@ target_compile_options(a6_wire PRIVATE ${A6_WARNINGS})
 # code cannot link against them).
 add_library(a6_probe_main OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_main.cpp)
 target_include_directories(a6_probe_main PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+target_compile_definitions(a6_probe_main PRIVATE A6_FORCE_MODELS="${A6_FORCE_MODELS}")
 target_link_libraries(a6_probe_main PRIVATE a6_harness_api nlohmann_json::nlohmann_json
                                             PkgConfig::SECCOMP)
 target_compile_options(a6_probe_main PRIVATE ${A6_WARNINGS})
@@ -45,7 +46,11 @@ line=${CMAKE_CXX_COMPILER} -o PROBE ${A6_PROBE_LINK_MAIN} SPRING.o FORCES.o TIME
 unset(_a6_probe_libs)
 
 # Probes of the solution and of the starter, for the tests (linked as a submission's is).
-foreach(set solution starter)
+set(probe_sets starter)
+if(A6_HAVE_SOLUTION)
+  list(APPEND probe_sets solution)
+endif()
+foreach(set IN LISTS probe_sets)
   add_executable(a6_probe_${set})
   target_link_libraries(a6_probe_${set} PRIVATE a6_probe_main ${A6_${set}_OBJECTS} a6_probe_kit)
 endforeach()

@@ -237,6 +237,21 @@ class ManifestError : public ::testing::Test {
   std::string error_;
 };
 
+// One test per image of `manifest` (of the tasks asked for), in suites GoldenTask<N><suffix>.
+void registerImages(const golden::Manifest& manifest, const std::string& suffix) {
+  for (const GoldenImage& image : manifest.images) {
+    bool wanted = config().tasks.empty();
+    for (int task : config().tasks) wanted = wanted || image.exercises(task);
+    if (!wanted) continue;
+    Scenes::get().need(image.scene, image.frame);
+    const std::string suite = "GoldenTask" + std::to_string(image.task) + suffix;
+    const std::string folder = manifest.folder;
+    ::testing::RegisterTest(
+        suite.c_str(), image.name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+        [image, folder]() -> ::testing::Test* { return new GoldenImageTest(image, folder); });
+  }
+}
+
 }  // namespace
 
 // Registers one test per manifest image (false: the manifest could not be read, and one
@@ -250,17 +265,20 @@ bool registerGoldenChecks(const std::string& failuresDir) {
                             [error]() -> ::testing::Test* { return new ManifestError(error); });
     return false;
   }
-  const golden::Manifest& manifest = read.manifest;
-  for (const GoldenImage& image : manifest.images) {
-    bool wanted = config().tasks.empty();
-    for (int task : config().tasks) wanted = wanted || image.exercises(task);
-    if (!wanted) continue;
-    Scenes::get().need(image.scene, image.frame);
-    const std::string suite = "GoldenTask" + std::to_string(image.task);
-    const std::string folder = manifest.folder;
-    ::testing::RegisterTest(
-        suite.c_str(), image.name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
-        [image, folder]() -> ::testing::Test* { return new GoldenImageTest(image, folder); });
+  registerImages(read.manifest, "");
+  // The hidden images (graders only: a student release has no hidden/ folder) beside it, as
+  // GoldenTask<N>Hidden.<name>.
+  const std::filesystem::path hidden =
+      std::filesystem::path(config().manifest).parent_path() / "hidden" / "manifest.json";
+  if (std::filesystem::exists(hidden)) {
+    golden::ManifestResult readHidden = golden::readManifest(hidden.string());
+    if (!readHidden) {
+      const std::string error = readHidden.error;
+      ::testing::RegisterTest("Manifest", "ReadsHidden", nullptr, nullptr, __FILE__, __LINE__,
+                              [error]() -> ::testing::Test* { return new ManifestError(error); });
+      return false;
+    }
+    registerImages(readHidden.manifest, "Hidden");
   }
   return true;
 }

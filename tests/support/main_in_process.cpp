@@ -7,7 +7,7 @@
 #include "summary.h"
 
 namespace {
-#include "reference_models.inc"
+#include A6_FORCE_MODELS  // reference_models.inc, or own_models.inc in a student release
 
 std::unique_ptr<a6::harness::StudentCode> gStudent;
 }  // namespace

@@ -1,0 +1,319 @@
+// Hidden checks (graders only: never in a student release). The contracts of the public checks
+// of tasks 1 to 4, on inputs drawn at random from the seed the grader chooses for each submission
+// and records in its report (a6_grade --seed N regrades with the same inputs), so a submission
+// cannot recognise its inputs and special-case them.
+//
+// The seed is GoogleTest's --gtest_random_seed (a6_grade sets it); without one (ctest) it is
+// fixed, so the instructors' runs are reproducible too. Each check mixes in its own name, so
+// adding a check changes no other check's inputs. Every expected value comes from the reference
+// models (reference_models.inc) or from the slide's formula written out here, and is compared
+// with a relative tolerance: a correct solution that adds the same terms in another order passes.
+//
+// Suites are named Task<N>Hidden: they count for task N in the per-task summary, and the rubric
+// gives them their own items (grader/rubric.toml: shown to students after the due date).
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <random>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "suite.h"
+
+namespace a6::test {
+namespace {
+
+#include "reference_models.inc"
+
+constexpr std::uint64_t kSeedWithoutGrader = 20261122;
+
+// The random numbers of the running check: the run's seed mixed with the check's name.
+class Draw {
+ public:
+  Draw() {
+    const std::int32_t flag = GTEST_FLAG_GET(random_seed);
+    seed_ = flag != 0 ? static_cast<std::uint64_t>(flag) : kSeedWithoutGrader;
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string name = std::string(info->test_suite_name()) + "." + info->name();
+    engine_.seed(seed_ ^ std::hash<std::string>{}(name));
+  }
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine_); }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(engine_); }
+  bool coin() { return integer(0, 1) == 1; }
+  Vec2 vec(double r) { return Vec2(uniform(-r, r), uniform(-r, r)); }
+  Vec2 unit() {
+    const double a = uniform(0, 2 * M_PI);
+    return Vec2(std::cos(a), std::sin(a));
+  }
+  /// Appended to every failure: how to regrade with the same inputs.
+  std::string seed() const { return " [random inputs, seed " + std::to_string(seed_) + "]"; }
+
+ private:
+  std::uint64_t seed_ = 0;
+  std::mt19937_64 engine_;
+};
+
+double relTol(const Vec2& expected) { return 1e-9 * (1 + expected.norm()); }
+
+// Task 1 -------------------------------------------------------------------------------------
+
+TEST(Task1Hidden, RandomSpringsMatchTheSlideFormula) {
+  Draw draw;
+  for (int k = 0; k < 200; ++k) {
+    harness::SpringForceRequest r;
+    r.p1.x = draw.vec(5);
+    do {
+      r.p2.x = draw.vec(5);
+    } while ((r.p2.x - r.p1.x).norm() < 0.05);
+    r.p1.v = draw.vec(3);
+    r.p2.v = draw.vec(3);
+    r.restLength = draw.uniform(0.1, 3);
+    r.ks = draw.uniform(1, 500);
+    r.kd = draw.coin() ? draw.uniform(0, 5) : 0;
+    Particle p1 = r.p1, p2 = r.p2;
+    Spring s;
+    s.p1 = &p1;
+    s.p2 = &p2;
+    s.restLength = r.restLength;
+    s.ks = r.ks;
+    s.kd = r.kd;
+    const Vec2 expected = referenceSpringForce(s);
+    const harness::SpringForceResult result = student().springForce(r);
+    A6_ASSERT_RAN(result);
+    ASSERT_VEC_NEAR(result.force, expected, relTol(expected))
+        << "input: p1 " << str(r.p1) << ", p2 " << str(r.p2) << ", l0=" << r.restLength
+        << ", ks=" << r.ks << ", kd=" << r.kd << draw.seed()
+        << hint("f2 = -ks (l - l0) e - kd ((v2 - v1)·e) e, with e = (x2 - x1) / l");
+  }
+}
+
+// Task 2 -------------------------------------------------------------------------------------
+
+TEST(Task2Hidden, RandomParticlesAndEnvironmentsMatchTheSlideFormulas) {
+  Draw draw;
+  for (int k = 0; k < 200; ++k) {
+    harness::ForcesRequest r;
+    Particle& p = r.particle;
+    p.x = draw.vec(2);
+    p.v = draw.vec(4);
+    p.m = draw.uniform(0.01, 5);
+    p.temperature = draw.uniform(250, 900);
+    Environment& env = r.env;
+    env.gravity = draw.unit() * draw.uniform(0, 15);
+    env.airTemperature = draw.uniform(250, 320);
+    env.buoyancy = draw.uniform(0, 0.05);
+    env.drag = draw.uniform(0, 2);
+    env.repulsion = draw.uniform(0, 2000);
+    for (int planes = draw.integer(0, 3); planes > 0; --planes) {
+      HalfPlane plane;
+      plane.normal = draw.unit();
+      plane.offset = draw.uniform(-2, 2);
+      env.planes.push_back(plane);
+    }
+    for (int circles = draw.integer(0, 3); circles > 0; --circles) {
+      CircleObstacle circle;
+      circle.center = draw.vec(2);
+      circle.radius = draw.uniform(0.1, 1.5);
+      env.circles.push_back(circle);
+    }
+    r.contact.depth = draw.uniform(-0.2, 0.2);
+    r.contact.normal = draw.unit();
+
+    const harness::ForcesResult result = student().forces(r);
+    A6_ASSERT_RAN(result);
+    const std::string in = "input: particle " + str(p) + ", g=" + str(env.gravity) +
+                           ", T_air=" + std::to_string(env.airTemperature) +
+                           ", b=" + std::to_string(env.buoyancy) + ", k_d=" +
+                           std::to_string(env.drag) + ", k_r=" + std::to_string(env.repulsion) +
+                           ", " + std::to_string(env.planes.size()) + " plane(s), " +
+                           std::to_string(env.circles.size()) + " circle(s)" + draw.seed();
+    const Vec2 gravity = p.m * env.gravity;
+    ASSERT_VEC_NEAR(result.gravity, gravity, relTol(gravity)) << in << hint("gravity is m g");
+    const Vec2 buoyancy = env.buoyancy * (p.temperature - env.airTemperature) * Vec2(0, 1);
+    ASSERT_VEC_NEAR(result.buoyancy, buoyancy, relTol(buoyancy))
+        << in << hint("buoyancy is b (T - T_air) (0, 1)");
+    const Vec2 drag = -env.drag * p.v;
+    ASSERT_VEC_NEAR(result.drag, drag, relTol(drag)) << in << hint("drag is -k_d v");
+    const Vec2 repulsion =
+        r.contact.depth > 0 ? Vec2(env.repulsion * r.contact.depth * r.contact.normal) : Vec2::Zero();
+    ASSERT_VEC_NEAR(result.repulsion, repulsion, relTol(repulsion))
+        << in << ", contact depth " << r.contact.depth << ", normal " << str(r.contact.normal)
+        << hint("repulsion is k_r d n while d > 0, and zero otherwise");
+    const Vec2 total = referenceExternalForce(p, env);
+    ASSERT_VEC_NEAR(result.total, total, 1e-9 * (1 + gravity.norm() + drag.norm() + total.norm() +
+                                                 env.repulsion))
+        << in << hint("externalForce is gravity + buoyancy + drag + the repulsion of every "
+                      "half-plane and every circle the particle is inside");
+  }
+}
+
+// Task 3 -------------------------------------------------------------------------------------
+
+// Symplectic Euler with the reference forces: the slide's step, written out.
+void referenceStep(std::vector<Particle>& ps, const std::vector<harness::SpringData>& springs,
+                   const Environment& env, double h) {
+  for (Particle& p : ps) p.f = referenceExternalForce(p, env);
+  for (const harness::SpringData& sd : springs) {
+    Spring s;
+    s.p1 = &ps[static_cast<std::size_t>(sd.i)];
+    s.p2 = &ps[static_cast<std::size_t>(sd.j)];
+    s.restLength = sd.restLength;
+    s.ks = sd.ks;
+    s.kd = sd.kd;
+    const Vec2 f = referenceSpringForce(s);
+    s.p2->f += f;
+    s.p1->f -= f;
+  }
+  for (Particle& p : ps) {
+    if (p.pinned) continue;
+    p.v += h * p.f / p.m;
+    p.x += h * p.v;
+  }
+}
+
+TEST(Task3Hidden, RandomChainsFollowSymplecticEulerWithSubsteps) {
+  Draw draw;
+  for (int k = 0; k < 12; ++k) {
+    harness::SimulateRequest r;
+    const int n = draw.integer(2, 6);
+    const double spacing = draw.uniform(0.2, 0.6);
+    const Vec2 dir = draw.unit();
+    for (int i = 0; i < n; ++i) {
+      Particle p;
+      p.x = i * spacing * dir + draw.vec(0.05);
+      p.v = draw.vec(0.5);
+      p.m = draw.uniform(0.2, 1);
+      p.pinned = i == 0 && draw.coin();
+      r.particles.push_back(p);
+    }
+    for (int i = 0; i + 1 < n; ++i) {
+      harness::SpringData s;
+      s.i = i;
+      s.j = i + 1;
+      s.restLength = spacing;
+      s.ks = draw.uniform(10, 150);
+      s.kd = draw.uniform(0, 0.5);
+      r.springs.push_back(s);
+    }
+    r.env.gravity = Vec2(0, -draw.uniform(0, 9.81));
+    r.env.drag = draw.uniform(0, 0.3);
+    r.env.buoyancy = 0;
+    r.env.repulsion = 0;
+    r.frameDt = 1.0 / 60;
+    r.substeps = draw.integer(1, 4);
+    r.stepOnly = false;
+    r.frames = 30;
+    r.recordEvery = 10;
+    r.referenceForces = true;
+
+    const harness::SimulateResult result = student().simulate(r);
+    A6_ASSERT_RAN(result);
+    ASSERT_EQ(result.states.size(), 3u) << currentTask() << ": expected 3 recorded states";
+    std::vector<Particle> expected = r.particles;
+    std::size_t recorded = 0;
+    for (int frame = 1; frame <= r.frames; ++frame) {
+      for (int s = 0; s < r.substeps; ++s) referenceStep(expected, r.springs, r.env, r.frameDt / r.substeps);
+      if (frame % r.recordEvery != 0) continue;
+      const std::vector<Particle>& actual = result.states[recorded++];
+      ASSERT_EQ(actual.size(), expected.size()) << currentTask() << ": particles added or removed";
+      for (std::size_t i = 0; i < expected.size(); ++i) {
+        ASSERT_VEC_NEAR(actual[i].x, expected[i].x, 1e-7 * (1 + expected[i].x.norm()))
+            << "particle " << i << " of a chain of " << n << " after frame " << frame << " ("
+            << r.substeps << " substep(s) of " << r.frameDt << " s / " << r.substeps
+            << ", first particle " << (r.particles[0].pinned ? "pinned" : "free") << ")"
+            << draw.seed()
+            << hint("per substep: reset forces, add external and spring forces (p2 gets f, p1 "
+                    "gets -f), then v += h f / m before x += h v, skipping pinned particles; "
+                    "advance(dt, n) takes n steps of dt / n");
+        ASSERT_VEC_NEAR(actual[i].v, expected[i].v, 1e-7 * (1 + expected[i].v.norm()))
+            << "velocity of particle " << i << " after frame " << frame << draw.seed()
+            << hint("v += h f / m, with f the sum of this substep's forces");
+      }
+    }
+  }
+}
+
+// Task 4 -------------------------------------------------------------------------------------
+
+TEST(Task4Hidden, RandomClothSpecsGiveTheGridAndItsSprings) {
+  Draw draw;
+  for (int k = 0; k < 10; ++k) {
+    ClothSpec spec;
+    spec.n = draw.integer(1, 12);
+    spec.size = draw.uniform(0.3, 3);
+    spec.origin = draw.vec(2);
+    spec.particleMass = draw.uniform(0.001, 0.1);
+    spec.ksStructural = draw.uniform(50, 500), spec.kdStructural = draw.uniform(0, 1);
+    spec.shear = draw.coin();
+    spec.ksShear = draw.uniform(10, 100), spec.kdShear = draw.uniform(0, 0.5);
+    spec.bending = false;  // the extension is extra credit: its checks are Task4Cloth.Bending*
+    spec.pinTopCorners = true;
+    const int n = spec.n;
+    const double h = spec.size / n;
+    const std::string in = "input: n=" + std::to_string(n) + ", size=" + std::to_string(spec.size) +
+                           ", origin " + str(spec.origin) + ", shear " +
+                           (spec.shear ? "on" : "off") + draw.seed();
+
+    const harness::ClothResult result = student().buildCloth(spec);
+    A6_ASSERT_RAN(result);
+    ASSERT_EQ(result.particles.size(), static_cast<std::size_t>((n + 1) * (n + 1)))
+        << currentTask() << ": " << in << hint("(n + 1)² particles");
+    for (int j = 0; j <= n; ++j) {
+      for (int i = 0; i <= n; ++i) {
+        const Particle& p = result.particles[static_cast<std::size_t>(clothIndex(i, j, n))];
+        const Vec2 x = spec.origin + Vec2(i, -j) * h;
+        ASSERT_VEC_NEAR(p.x, x, 1e-9 * (1 + x.norm()))
+            << "particle (" << i << ", " << j << "), " << in
+            << hint("particle (i, j) sits at origin + (i, -j) size / n, index j (n + 1) + i");
+        ASSERT_EQ(p.pinned, (j == 0 && (i == 0 || i == n)))
+            << currentTask() << ": particle (" << i << ", " << j << "), " << in
+            << hint("pin the two top corners only");
+        ASSERT_CLOSE(p.m, spec.particleMass, 0.0) << in << hint("every particle has particleMass");
+      }
+    }
+
+    // The expected springs: unordered index pair -> (type, rest length, ks, kd).
+    using Key = std::pair<int, int>;
+    std::map<Key, std::tuple<SpringType, double, double, double>> want;
+    auto add = [&](int i1, int j1, int i2, int j2, SpringType type, double l0, double ks, double kd) {
+      const int a = clothIndex(i1, j1, n), b = clothIndex(i2, j2, n);
+      want[{std::min(a, b), std::max(a, b)}] = {type, l0, ks, kd};
+    };
+    for (int j = 0; j <= n; ++j) {
+      for (int i = 0; i <= n; ++i) {
+        if (i < n) add(i, j, i + 1, j, SpringType::Structural, h, spec.ksStructural, spec.kdStructural);
+        if (j < n) add(i, j, i, j + 1, SpringType::Structural, h, spec.ksStructural, spec.kdStructural);
+        if (spec.shear && i < n && j < n) {
+          add(i, j, i + 1, j + 1, SpringType::Shear, std::sqrt(2.0) * h, spec.ksShear, spec.kdShear);
+          add(i + 1, j, i, j + 1, SpringType::Shear, std::sqrt(2.0) * h, spec.ksShear, spec.kdShear);
+        }
+      }
+    }
+    ASSERT_EQ(result.springs.size(), want.size())
+        << currentTask() << ": the number of springs, " << in
+        << hint("structural springs to the right and below every particle, and both diagonals "
+                "of every cell when shear is on; no spring twice");
+    for (const harness::SpringData& s : result.springs) {
+      const auto found = want.find({std::min(s.i, s.j), std::max(s.i, s.j)});
+      ASSERT_TRUE(found != want.end())
+          << currentTask() << ": a spring between particles " << s.i << " and " << s.j
+          << " that the cloth does not have, " << in
+          << hint("structural: (i,j)-(i+1,j), (i,j)-(i,j+1); shear: (i,j)-(i+1,j+1), "
+                  "(i+1,j)-(i,j+1)");
+      const auto& [type, l0, ks, kd] = found->second;
+      ASSERT_EQ(s.type, type) << currentTask() << ": spring " << s.i << "-" << s.j << ", " << in
+                              << hint("tag each spring with its SpringType");
+      ASSERT_CLOSE(s.restLength, l0, 1e-9 * (1 + l0)) << "spring " << s.i << "-" << s.j << ", " << in
+                                                      << hint("rest length h or sqrt(2) h");
+      ASSERT_CLOSE(s.ks, ks, 0.0) << "spring " << s.i << "-" << s.j << ", " << in
+                                  << hint("the constants of the spring's type");
+      ASSERT_CLOSE(s.kd, kd, 0.0) << "spring " << s.i << "-" << s.j << ", " << in
+                                  << hint("the constants of the spring's type");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace a6::test
