@@ -42,29 +42,34 @@ render="$build/framework/render/a6_render_solution"
 if [ -x "$render" ]; then
   echo "=== the reference images, re-rendered from solution/: out/goldens ==="
   rm -rf out/goldens
-  mkdir -p out/goldens
-  cp tests/golden/manifest.json out/goldens/
-  if "$render" --goldens --golden-dir out/goldens >out/goldens/render.log 2>&1; then
-    same=0 differ=""
-    for png in out/goldens/*.png; do
+  # render_set FROM TO: re-render the manifest of FROM into TO, compare TO's PNGs with FROM's.
+  render_set() {
+    mkdir -p "$2"
+    cp "$1/manifest.json" "$2/"
+    if ! "$render" --goldens --golden-dir "$2" >"$2/render.log" 2>&1; then
+      echo "main: rendering the reference images of $1 failed:"
+      tail -5 "$2/render.log"
+      status=1
+      return
+    fi
+    local same=0 differ="" png name
+    for png in "$2"/*.png; do
       name=$(basename "$png")
-      if cmp -s "$png" "tests/golden/$name"; then
+      if cmp -s "$png" "$1/$name"; then
         same=$((same + 1))
       else
         differ="$differ $name"
       fi
     done
-    echo "$((same)) images identical to tests/golden${differ:+; differing:$differ}"
+    echo "$same images identical to $1${differ:+; differing:$differ}"
     if [ -n "$differ" ]; then
-      echo "main: some reference images differ from tests/golden (another renderer? see" \
+      echo "main: some reference images differ from $1 (another renderer? see" \
         "docs/rendering.md; ctest -L golden compares them pixel by pixel)"
       status=1
     fi
-  else
-    echo "main: rendering the reference images failed:"
-    tail -5 out/goldens/render.log
-    status=1
-  fi
+  }
+  render_set tests/golden out/goldens
+  [ -d tests/golden/hidden ] && render_set tests/golden/hidden out/goldens/hidden
 else
   echo "(no $render: this build has no headless GL; the reference images were not re-rendered)"
 fi

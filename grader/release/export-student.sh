@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# Exports the student release: what students receive, and nothing of the graders'.
+#
+#   grader/release/export-student.sh DEST [--zip]
+#
+# DEST (a new or empty folder) receives the framework, the starter, the public tests and their
+# reference images, the handout and the viewer, with:
+#   README.md                        grader/release/README.md (the students' two commands)
+#   grader/rubric.toml               the public rubric (a6_grade --public-rubric: no hidden items)
+#   .github/workflows/classroom.yml  grader/release/classroom.yml (GitHub Classroom)
+#   RELEASE                          the commit it was exported from
+# and never: the solution, the hidden checks (tests/hidden), the hidden images
+# (tests/golden/hidden), the reference force models, the wrong versions, the grader's own tests,
+# the instructors' scripts and guide. Files are taken from git (`git ls-files`), so nothing
+# untracked or built travels. Last, the export is scanned for solution text (scan-release.sh);
+# a hit removes nothing silently: the export fails and names the file and line.
+#
+# --zip also writes DEST.zip (for the course page). A6_GRADE names the a6_grade binary that writes
+# the public rubric (default: build/grader/a6_grade, built if missing).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+
+dest="" zip=0
+for arg in "$@"; do
+  case "$arg" in
+    --zip) zip=1 ;;
+    -h | --help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "export-student: unknown option $arg" >&2; exit 2 ;;
+    *) [ -z "$dest" ] || { echo "export-student: one DEST only" >&2; exit 2; }; dest="$arg" ;;
+  esac
+done
+[ -n "$dest" ] || { echo "usage: grader/release/export-student.sh DEST [--zip]" >&2; exit 2; }
+if [ -e "$dest" ] && [ -n "$(ls -A "$dest" 2>/dev/null)" ]; then
+  echo "export-student: $dest exists and is not empty: give a new folder" >&2
+  exit 2
+fi
+git -C "$root" rev-parse --git-dir >/dev/null 2>&1 ||
+  { echo "export-student: $root is not a git checkout (the release is taken from git)" >&2; exit 1; }
+
+# The graders' material, and what only instructors use: never exported. A path ending in / is a
+# folder.
+excluded=(
+  solution/                          # the solution
+  tests/hidden/                      # hidden checks (random inputs)
+  tests/golden/hidden/               # hidden reference images
+  tests/support/reference_models.inc # the reference force models (tasks 1 and 2 solved)
+  tests/wrong/ tests/alternative/    # solution variants
+  tests/grader/ tests/bench/ tests/release/ tests/packaging/   # use the solution
+  grader/release/ grader/gradescope/ # the export tools and the autograder package
+  grader/rubric.toml README.md       # replaced below
+  docs/instructor.md                 # the graders' guide
+  scripts/main.sh scripts/bench-grader.sh scripts/gradescope-package.sh
+  .ci/
+)
+is_excluded() {
+  local path="$1" x
+  for x in "${excluded[@]}"; do
+    if [[ "$x" == */ ]]; then [[ "$path" == "$x"* ]] && return 0
+    else [[ "$path" == "$x" ]] && return 0; fi
+  done
+  return 1
+}
+
+# The public rubric, from the graders' rubric.
+grade="${A6_GRADE:-$root/build/grader/a6_grade}"
+if [ ! -x "$grade" ]; then
+  echo "export-student: building a6_grade (for the public rubric)"
+  (cd "$root" && { [ -f build/CMakeCache.txt ] || cmake --preset default >/dev/null; } &&
+    cmake --build build --target a6_grade >/dev/null)
+fi
+mkdir -p "$dest"
+dest="$(cd "$dest" && pwd)"
+"$grade" --rubric "$root/grader/rubric.toml" --public-rubric "$dest/rubric.public.toml"
+
+count=0
+while IFS= read -r -d '' path; do
+  is_excluded "$path" && continue
+  [ -e "$root/$path" ] || continue  # deleted in the working tree, not yet committed
+  mkdir -p "$dest/$(dirname "$path")"
+  cp -p "$root/$path" "$dest/$path"
+  count=$((count + 1))
+done < <(git -C "$root" ls-files -z)
+
+mkdir -p "$dest/grader" "$dest/.github/workflows"
+mv "$dest/rubric.public.toml" "$dest/grader/rubric.toml"
+cp "$here/README.md" "$dest/README.md"
+cp "$here/classroom.yml" "$dest/.github/workflows/classroom.yml"
+printf 'Assignment 6 student release, exported %s from commit %s\n' \
+  "$(date -u +%Y-%m-%d)" "$(git -C "$root" rev-parse --short HEAD)" >"$dest/RELEASE"
+
+if ! bash "$here/scan-release.sh" "$root" "$dest"; then
+  echo "export-student: the export in $dest holds graders' material (above): not released" >&2
+  exit 1
+fi
+echo "export-student: $((count + 4)) files in $dest (no solution, no hidden checks or images)"
+
+if [ "$zip" -eq 1 ]; then
+  rm -f "$dest.zip"
+  (cd "$(dirname "$dest")" && zip -qr "$dest.zip" "$(basename "$dest")")
+  echo "export-student: $dest.zip"
+fi

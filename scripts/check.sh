@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Grades your own work before you submit it, as the grader will: each of the six files compiled on
+# its own and run in a sandbox, scored by the rubric in grader/rubric.toml, and the same report.
+#
+#   scripts/check.sh [FOLDER]     # FOLDER: your six files (default: starter/)
+#
+# Writes out/check/report.html (open it in a browser: every check with its message, your
+# pictures beside the reference images) and out/check/results.json, and prints the summary.
+# In a student release the rubric holds the public checks only: the graders run hidden checks
+# too, after you submit (docs/handout.md, "Checking your work").
+set -uo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+folder="${1:-$root/starter}"
+out="$root/out/check"
+if [ ! -d "$folder" ]; then
+  echo "check: $folder is not a folder (give the folder that holds your six .cpp files)" >&2
+  exit 2
+fi
+folder="$(cd "$folder" && pwd)"
+
+cd "$root" || exit 1
+if [ ! -f build/CMakeCache.txt ]; then
+  cmake --preset default >/dev/null || { echo "check: configuring failed (see above)" >&2; exit 1; }
+fi
+cmake --build build --target a6_grade >/dev/null ||
+  { echo "check: building the grader failed: run 'cmake --build build' to see why" >&2; exit 1; }
+
+echo "check: grading $folder (out/check/report.html)"
+rm -rf "$out"
+build/grader/a6_grade "$folder" --out "$out" --quiet
+status=$?
+[ "$status" -eq 0 ] || echo "check: the grader failed (exit status $status): see $out/results.json" >&2
+exit "$status"

@@ -1,0 +1,170 @@
+#!/usr/bin/env bash
+# The student release, end to end (ctest release_student, label "packaging"):
+#
+#   student_release_test.sh ROOT A6_GRADE WORK
+#
+#  1. exports it (grader/release/export-student.sh) into WORK/release;
+#  2. checks what is in it and what is not, and scans it for solution text on its own terms
+#     (every line of solution/*.cpp of 25+ characters that the starter does not have);
+#  3. follows its README from scratch: scripts/install-deps.sh (nothing to install here), then
+#     the test command, scripts/test.sh, which must build and then fail clearly on the starter:
+#     every task's physics tests fail, the summary says where to look;
+#  4. runs scripts/check.sh (the local check): the starter gets 0 of the public points, a
+#     finished solution all of them, and a wrong cloth the same score per public rubric item as
+#     the graders' a6_grade gives it;
+#  5. runs the commands of the GitHub Classroom workflow: they exist and the task steps fail on
+#     the starter.
+set -uo pipefail
+root="$1" grade="$2" work="$3"
+rm -rf "$work"
+mkdir -p "$work"
+release="$work/release"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+pass() { echo "ok:   $*"; }
+start=$(date +%s)
+
+# 1. Export.
+if ! A6_GRADE="$grade" bash "$root/grader/release/export-student.sh" "$release" >"$work/export.log" 2>&1; then
+  cat "$work/export.log"
+  fail "the export failed"
+  exit 1
+fi
+pass "exported: $(tail -1 "$work/export.log")"
+
+# 2. Contents.
+for absent in solution tests/hidden tests/golden/hidden tests/support/reference_models.inc \
+              tests/wrong tests/grader docs/instructor.md scripts/main.sh .ci; do
+  [ -e "$release/$absent" ] && fail "$absent is in the release"
+done
+for present in README.md scripts/install-deps.sh scripts/test.sh scripts/check.sh \
+               docs/handout.md docs/viewer.md framework/viewer/main.cpp tests/support/own_models.inc \
+               tests/golden/manifest.json .github/workflows/classroom.yml grader/rubric.toml; do
+  [ -e "$release/$present" ] || fail "$present is missing from the release"
+done
+starters=$(ls "$release"/starter/*.cpp 2>/dev/null | wc -l)
+[ "$starters" -eq 6 ] || fail "the release has $starters starter files, not 6"
+for f in "$root"/starter/*.cpp; do
+  cmp -s "$f" "$release/starter/$(basename "$f")" || fail "starter/$(basename "$f") differs from the starter"
+done
+pngs=$(ls "$release"/tests/golden/*.png | wc -l)
+public_pngs=$(ls "$root"/tests/golden/*.png | wc -l)
+[ "$pngs" -eq "$public_pngs" ] || fail "$pngs reference images in the release, $public_pngs public ones"
+grep -q 'Hidden' "$release/grader/rubric.toml" && fail "the release's rubric names hidden checks"
+grep -q '^total = 87' "$release/grader/rubric.toml" || fail "the public rubric's total is not 87"
+pass "contents: 6 starter files, $pngs reference images, public rubric"
+
+# The scan, written differently from scan-release.sh: the solution's statements (lines ending in
+# ';', 25+ characters, not comments; loop and block headers such as "for (int j = 0; j <= n; ++j) {"
+# are in any grid code) that the starter lacks, matched as whole lines, blanks trimmed.
+grep -hv '^[[:space:]]*//' "$root"/solution/*.cpp | sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' |
+  awk 'length($0) >= 25 && /;$/' | sort -u >"$work/solution_lines"
+sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' "$root"/starter/*.cpp | sort -u >"$work/starter_lines"
+comm -23 "$work/solution_lines" "$work/starter_lines" >"$work/needles"
+needles=$(wc -l <"$work/needles")
+[ "$needles" -gt 30 ] || fail "only $needles solution lines to look for"
+if hits=$(find "$release" -type f -exec grep -IlF -f "$work/needles" {} + |
+           while IFS= read -r f; do
+             sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' "$f" | grep -nFx -f "$work/needles" |
+               sed "s|^|${f#"$release"/}:|"
+           done | grep .); then
+  fail "solution text in the release:"
+  echo "$hits" | head -20
+else
+  pass "no line of the solution ($needles looked for) in $(find "$release" -type f | wc -l) files"
+fi
+
+# 3. The README's commands, from scratch.
+cd "$release" || exit 1
+readme_commands=$(sed -n '/^```sh/,/^```/p' README.md | head -4)
+echo "$readme_commands" | grep -q 'scripts/install-deps.sh && scripts/check.sh' ||
+  fail "README does not open with scripts/install-deps.sh && scripts/check.sh"
+echo "$readme_commands" | grep -q '^scripts/test.sh' || fail "README's second command is not scripts/test.sh"
+bash scripts/install-deps.sh >"$work/install.log" 2>&1 || { cat "$work/install.log"; fail "install-deps failed"; }
+build_start=$(date +%s)
+bash scripts/test.sh >"$work/test.log" 2>&1
+test_status=$?
+echo "      scripts/test.sh: exit $test_status after $(( $(date +%s) - build_start )) s"
+if ! grep -q 'Build files have been written' "$work/test.log" || ! grep -q 'tests passed' "$work/test.log"; then
+  tail -30 "$work/test.log"
+  fail "scripts/test.sh did not build and run the tests"
+fi
+[ "$test_status" -ne 0 ] || fail "scripts/test.sh passed on the starter: its tests must fail"
+summary=$(grep -m1 '^A6-SUMMARY' "$work/test.log")
+if [ -z "$summary" ]; then
+  fail "the physics tests printed no per-task summary"
+else
+  for t in 1 2 3 4 5 6; do
+    failed=$(echo "$summary" | tr ' ' '\n' | grep "^$t:" | cut -d: -f3)
+    [ "${failed:-0}" -gt 0 ] || fail "task $t: no failing test on the starter ($summary)"
+  done
+  [ "$(grep -c 'look here' "$work/test.log")" -ge 6 ] || fail "the summary does not point at every task"
+  pass "scripts/test.sh fails clearly on the starter: $summary"
+fi
+grep -q 'Failed.*physics' "$work/test.log" || grep -q 'physics.*Failed' "$work/test.log" ||
+  fail "ctest does not list the physics tests as failed"
+
+# 4. The local check.
+score_of() { grep -m1 '"score"' "$1" | tr -dc '0-9.'; }
+bash scripts/check.sh >"$work/check_starter.log" 2>&1 || { cat "$work/check_starter.log"; fail "scripts/check.sh failed on the starter"; }
+[ -s out/check/report.html ] || fail "no out/check/report.html"
+[ "$(score_of out/check/results.json)" = "0.0" ] ||
+  fail "the starter scored $(score_of out/check/results.json) in the local check"
+grep -q 'total *0.00 / 87.00' "$work/check_starter.log" || fail "check.sh's summary does not say 0 / 87"
+pass "scripts/check.sh on the starter: 0 / 87, report.html written"
+
+mkdir -p "$work/finished"
+cp "$root"/solution/*.cpp "$work/finished/"
+bash scripts/check.sh "$work/finished" >"$work/check_solution.log" 2>&1
+grep -q 'total *87.00 / 87.00 *+3.00 extra credit' "$work/check_solution.log" ||
+  { tail -5 "$work/check_solution.log"; fail "a finished submission does not get 87 / 87 + 3 in the local check"; }
+pass "scripts/check.sh on a finished submission: $(grep -m1 'total ' "$work/check_solution.log" | tr -s ' ')"
+
+# A wrong cloth: the local check and the graders' a6_grade agree item by item on the public items.
+mkdir -p "$work/wrong"
+cp "$root"/solution/*.cpp "$work/wrong/"
+cp "$root"/tests/wrong/t4_shear_with_structural_rest_length/cloth.cpp "$work/wrong/"
+bash scripts/check.sh "$work/wrong" >"$work/check_wrong.log" 2>&1
+cp out/check/results.json "$work/local.json"
+"$grade" "$work/wrong" --out "$work/graders" --quiet >"$work/graders.log" 2>&1
+# The score of the results.json test whose name starts with "$2 (" (a6_grade writes one field
+# per line; the name comes before the score).
+item_score() {
+  awk -v want="\"name\": \"$2 (" 'index($0, want) { found = 1 }
+    found && /"score":/ { gsub(/[^0-9.]/, ""); print; exit }' "$1"
+}
+for name in "Task 4: cloth" "Task 4: sanity checks" "Task 1: spring force" "Task 3: time stepping"; do
+  l=$(item_score "$work/local.json" "$name")
+  g=$(item_score "$work/graders/results.json" "$name")
+  [ -n "$l" ] && [ "$l" = "$g" ] || fail "item '$name': local check '$l', grader '$g'"
+done
+lost=$(item_score "$work/local.json" "Task 4: cloth")
+[ -n "$lost" ] && [ "$lost" != "12.0" ] || fail "the wrong cloth lost no point in the local check ($lost)"
+pass "a wrong cloth: local check and grader agree on the public items (Task 4: cloth $lost / 12)"
+
+# 5. The GitHub Classroom workflow's commands.
+workflow=.github/workflows/classroom.yml
+grep -q 'container: debian:12' "$workflow" || fail "the workflow does not run in Debian 12"
+step=0
+while IFS= read -r cmd; do
+  step=$((step + 1))
+  case "$cmd" in
+    *install-deps*) continue ;;  # done above
+  esac
+  bash -c "$cmd" >"$work/workflow_$step.log" 2>&1
+  status=$?
+  case "$cmd" in
+    *a6_tests*)
+      [ "$status" -ne 0 ] && [ "$status" -ne 127 ] && grep -q 'FAILED' "$work/workflow_$step.log" ||
+        fail "workflow step '$cmd': exit $status, expected failing tests on the starter" ;;
+    *"-L golden"*)
+      [ "$status" -ne 0 ] || fail "workflow step '$cmd' passed on the starter" ;;
+    *)
+      [ "$status" -eq 0 ] || { tail -5 "$work/workflow_$step.log"; fail "workflow step '$cmd': exit $status"; } ;;
+  esac
+done < <(sed -n 's/^ *run: //p' "$workflow")
+[ "$step" -ge 9 ] || fail "the workflow has $step run steps, expected one per task and more"
+pass "the workflow's $step commands run in the release (task steps fail on the starter)"
+
+echo "student release test: $failures failure(s) in $(( $(date +%s) - start )) s"
+[ "$failures" -eq 0 ]
