@@ -202,6 +202,8 @@ Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& 
     s.limits = compileLimits;
     s.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "TMPDIR=" + dir.string()};
     s.hide = hide;
+    s.uid = kit.uid;
+    s.gid = kit.gid;
     Exit e = runSandboxed(s);
     std::lock_guard<std::mutex> lock(notesMutex);
     for (const std::string& n : e.notes) {

@@ -28,6 +28,11 @@ struct Kit {
   /// files: the repository (solution, hidden tests, goldens) and the build tree. A caller may
   /// add more (a batch's other submissions) before buildProbe.
   std::vector<std::filesystem::path> secrets;
+  /// Who compiles and links when the grader is root (SandboxSpec::uid, gid). Not in kit.json:
+  /// a caller that grades several submissions at once gives each its own uid, since processes
+  /// of one uid share their process limit (a6_grade --sandbox-uid).
+  uid_t uid = 65534;
+  gid_t gid = 65534;
   std::string error;
   bool ok() const { return error.empty(); }
 };

@@ -1,7 +1,8 @@
 // a6_grade: grades one submission (grader/DESIGN.md).
 //
 //   a6_grade SUBMISSION --out DIR [--rubric FILE] [--seed N] [--kit FILE] [--jobs N]
-//            [--time-budget S] [--tests FILTER] [--hide PATH]... [--quiet] [--color]
+//            [--time-budget S] [--tests FILTER] [--hide PATH]... [--sandbox-uid UID]
+//            [--quiet] [--color]
 //   a6_grade --list-tests [--rubric FILE]
 //
 // Stages: intake -> build -> run the physics suite (and the golden-image checks) in this process
@@ -225,9 +226,10 @@ std::vector<fs::path> hiddenFromProbe(const std::vector<fs::path>& secrets, cons
 // student code (a scene request with an invalid frame, refused before any scene is made);
 // otherwise why not (it crashed, exited or hung before main: a static initializer, typically).
 std::string startupFailure(const fs::path& probe, const fs::path& runDir,
-                           const std::vector<fs::path>& hide) {
+                           const std::vector<fs::path>& hide, uid_t uid, gid_t gid) {
   ProbeClient client(probe, runDir, Limits{});
   client.setHidden(hide);
+  client.setUser(uid, gid);
   client.setRequestTimeout(kStartupSeconds);
   client.setMaxStarts(1);
   harness::SceneRequest ping;
@@ -451,6 +453,7 @@ struct Options {
   std::string rubric;
   std::string kit;
   std::vector<std::string> hide;  // more secrets: a batch's other submissions and results
+  uid_t sandboxUid = 65534;       // who compiles and runs the probe, as root (nobody)
   std::optional<std::uint64_t> seed;
   int jobs = 0;
   double timeBudget = kDefaultTimeBudget;
@@ -471,7 +474,8 @@ struct Options {
 std::string checkStartup(const Kit& kit, GradeReport& report, const fs::path& work,
                          const std::vector<fs::path>& secrets) {
   const std::vector<fs::path> hide = hiddenFromProbe(secrets, work);
-  const std::string failure = startupFailure(report.build.probe, work / "startup", hide);
+  const std::string failure =
+      startupFailure(report.build.probe, work / "startup", hide, kit.uid, kit.gid);
   if (failure.empty()) return "";
 
   std::map<std::string, std::string> culprits;  // task file -> why its probe did not start
@@ -482,7 +486,7 @@ std::string checkStartup(const Kit& kit, GradeReport& report, const fs::path& wo
     const fs::path dir = work / "startup" / fs::path(task.file).stem();
     const Build solo = buildProbe(kit, alone, dir / "build");
     if (!solo.ok()) continue;
-    const std::string why = startupFailure(solo.probe, dir / "run", hide);
+    const std::string why = startupFailure(solo.probe, dir / "run", hide, kit.uid, kit.gid);
     if (!why.empty()) culprits[task.file] = why;
   }
   const std::string whole =
@@ -509,7 +513,8 @@ std::string checkStartup(const Kit& kit, GradeReport& report, const fs::path& wo
   }
   rebuilt.seconds += report.build.seconds;
   report.build = rebuilt;
-  if (const std::string still = startupFailure(report.build.probe, work / "startup", hide);
+  if (const std::string still =
+          startupFailure(report.build.probe, work / "startup", hide, kit.uid, kit.gid);
       !still.empty()) {
     return "the program built from your files did not start, even with the starter's code in "
            "place of the files that kept it from starting: " +
@@ -581,14 +586,14 @@ int grade(const Options& options, const Rubric& rubric) {
 
   // The compiler and the probe could not read the submission's files under `out` (a home folder
   // of mode 0700, say): then the scratch files go where they can, and are removed afterwards.
-  if (geteuid() == 0 && !enterableBy(out, kSandboxUid, kSandboxGid)) {
+  if (geteuid() == 0 && !enterableBy(out, options.sandboxUid, kSandboxGid)) {
     scratch = enterableScratch();
     if (!scratch.empty()) {
       work = scratch;
-      report.notes.push_back("the output folder " + out.string() +
-                             " cannot be entered by the sandbox's user (nobody), so the scratch "
-                             "files went to " +
-                             work.string() + " (removed afterwards)");
+      report.notes.push_back(
+          "the output folder " + out.string() + " cannot be entered by the sandbox's user (uid " +
+          std::to_string(options.sandboxUid) + "), so the scratch files went to " + work.string() +
+          " (removed afterwards)");
     }
   }
 
@@ -617,6 +622,8 @@ int grade(const Options& options, const Rubric& rubric) {
   try {
     Kit kit = loadKit(options.kit.empty() ? defaultKitPath() : fs::path(options.kit));
     for (const std::string& path : options.hide) kit.secrets.push_back(fs::absolute(path));
+    kit.uid = options.sandboxUid;
+    kit.gid = kSandboxGid;
     if (!kit.ok()) {
       fail("the grader's kit is unusable: " + kit.error);
       unavailable = "the grader could not build your code (a grader problem, not yours)";
@@ -655,6 +662,7 @@ int grade(const Options& options, const Rubric& rubric) {
     try {
       auto client = std::make_unique<ProbeClient>(report.build.probe, work / "run", Limits{});
       client->setHidden(hiddenFromProbe(secrets, work));
+      client->setUser(options.sandboxUid, kSandboxGid);
       ProbeClient* raw = client.get();
       setTimeout = [raw](double seconds) { raw->setRequestTimeout(seconds); };
       newCheck = [raw] { raw->setMaxStarts(raw->starts() + kStartsPerCheck); };
@@ -767,6 +775,11 @@ int main(int argc, char** argv) {
                  "run's own work folder (a6_batch hides the other submissions and results); "
                  "repeatable")
       ->allow_extra_args(false);  // one path per --hide: never the submission after it
+  app.add_option("--sandbox-uid", options.sandboxUid,
+                 "as root, run the compiler and the probe as this user id instead of nobody "
+                 "(65534): processes of one user share the sandbox's process limit, so "
+                 "gradings that run at the same time need different ones (a6_batch does this)")
+      ->check(CLI::Range(1u, 4294967294u));
   app.add_option("--jobs", options.jobs,
                  "accepted for scripts that grade in batches; one grading compiles its six "
                  "files one after another")

@@ -77,6 +77,23 @@ std::string describeBuild(const TaskBuild& t) {
   return "?";
 }
 
+// The build status as one keyword (results.json's extra_data.build).
+const char* buildKeyword(const TaskBuild& t) {
+  switch (t.status) {
+    case TaskBuild::Status::Compiled:
+      return "compiled";
+    case TaskBuild::Status::Missing:
+      return "missing";
+    case TaskBuild::Status::CompileError:
+      return "did not compile";
+    case TaskBuild::Status::TimedOut:
+      return "compiler timed out";
+    case TaskBuild::Status::LinkError:
+      return "did not link or start";
+  }
+  return "?";
+}
+
 std::string itemTitle(const ScoredItem& s) {
   const int total = s.passed + s.failed;
   return s.item.name + " (" + std::to_string(s.passed) + "/" + std::to_string(total) +
@@ -261,6 +278,11 @@ std::string resultsJson(const GradeReport& report) {
   Json outcomes = Json::object();
   for (const TestOutcome& t : report.tests) outcomes[t.name] = t.passed ? "passed" : "failed";
   extra["tests"] = std::move(outcomes);
+  // How each task file built, for scripts (a6_batch's "build failed"): the same as the output's
+  // "Build:" lines, as keywords.
+  Json build = Json::object();
+  for (const TaskBuild& t : report.build.tasks) build[t.file] = buildKeyword(t);
+  extra["build"] = std::move(build);
   extra["warnings"] = report.warnings;
   extra["notes"] = report.notes;
   extra["errors"] = report.errors;

@@ -24,6 +24,7 @@ packages=(
   libimgui-dev       # Dear ImGui: the viewer's widgets
   xvfb xauth         # a virtual X server for the viewer's smoke test
   fonts-dejavu-core  # the viewer panel's font (Greek letters, ×)
+  zip unzip          # the Gradescope autograder zip (scripts/gradescope-package.sh) and its test
 )
 
 missing=()

@@ -4,7 +4,8 @@
 # out/solution and out/starter (results.json, report.html; the summary is printed here); then
 # re-render the reference images from the solution into out/goldens and compare them with the
 # committed ones in tests/golden (which are left alone). The solution must get every point; the
-# starter none (that is expected: it is what students start from).
+# starter none (that is expected: it is what students start from). Last, it exports the student
+# release (out/student-release, .zip) and the Gradescope autograder zip (out/gradescope/).
 set -uo pipefail
 cd "$(dirname "$0")/.." || exit 1
 cmake --preset default >/dev/null && cmake --build --preset default || exit 1
@@ -72,5 +73,18 @@ if [ -x "$render" ]; then
   [ -d tests/golden/hidden ] && render_set tests/golden/hidden out/goldens/hidden
 else
   echo "(no $render: this build has no headless GL; the reference images were not re-rendered)"
+fi
+
+# What goes to students and to Gradescope, from the committed files.
+echo
+echo "=== the student release and the Gradescope autograder zip: out/ ==="
+rm -rf out/student-release out/student-release.zip
+if ! A6_GRADE="$build/grader/a6_grade" grader/release/export-student.sh out/student-release --zip; then
+  echo "main: exporting the student release failed"
+  status=1
+fi
+if ! scripts/gradescope-package.sh out/gradescope/a6_autograder.zip; then
+  echo "main: building the Gradescope zip failed"
+  status=1
 fi
 exit $status

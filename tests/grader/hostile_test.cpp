@@ -15,8 +15,6 @@
 //
 // Each case is its own ctest entry (--gtest_filter), so they run in parallel. The table of cases
 // and the scores they get is in docs/instructor.md, "Hostile submissions".
-#include <archive.h>
-#include <archive_entry.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -29,7 +27,6 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -37,6 +34,7 @@
 #include <vector>
 
 #include "rubric.h"
+#include "staging.h"
 
 namespace {
 
@@ -45,31 +43,14 @@ using a6::grader::Rubric;
 using a6::grader::RubricItem;
 using nlohmann::json;
 
-const std::vector<std::string> kTaskFiles = {"spring.cpp",          "forces.cpp",
-                                             "time_stepping.cpp",   "cloth.cpp",
-                                             "particle_system.cpp", "joints.cpp"};
-const fs::path kSource = A6_SOURCE_DIR;
-const fs::path kFixtures = kSource / "tests" / "grader" / "submissions";
+// The submissions are prepared in staging.h (batch_test.cpp grades the same ones in a batch).
+using a6::test::staging::kFixtures;
+using a6::test::staging::kSource;
+using a6::test::staging::kTaskFiles;
+using a6::test::staging::readAll;
+using a6::test::staging::stage;
+using a6::test::staging::writeArchive;
 const char* const kMarker = "a6_hostile_was_here";  // what write_files tries to leave behind
-
-std::string readAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void writeAll(const fs::path& file, const std::string& text) {
-  fs::create_directories(file.parent_path());
-  std::ofstream(file, std::ios::binary) << text;
-}
-
-std::string replaceAll(std::string s, const std::string& from, const std::string& to) {
-  for (std::size_t at = 0; (at = s.find(from, at)) != std::string::npos; at += to.size()) {
-    s.replace(at, from.size(), to);
-  }
-  return s;
-}
 
 // This case's folder, inside the build tree (ctest's working directory), emptied.
 fs::path caseDir(const std::string& name) {
@@ -109,51 +90,12 @@ Graded grade(const fs::path& submission, const fs::path& out, const fs::path& ru
   return g;
 }
 
-// ---- submissions --------------------------------------------------------------------------------
-
-// The fixture's text as graded: @A6_SOURCE_DIR@ becomes the repository's path (so that the
-// attacks aim at the real solution and goldens).
-std::string substituted(const fs::path& file) {
-  return replaceAll(readAll(file), "@A6_SOURCE_DIR@", kSource.string());
-}
-
-// A submission folder: the solution's six files, the starter's for the tasks in `starter`, then
-// the fixture's task files over them (a link stays a link, made absolute), without `omit`.
-fs::path stage(const fs::path& dir, const std::string& fixture, const std::set<int>& starter = {},
-               const std::vector<std::string>& omit = {}) {
-  fs::create_directories(dir);
-  for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {
-    const std::string& file = kTaskFiles[i];
-    const char* from = starter.count(static_cast<int>(i + 1)) ? "starter" : "solution";
-    fs::copy_file(kSource / from / file, dir / file, fs::copy_options::overwrite_existing);
-  }
-  if (!fixture.empty()) {
-    const fs::path source = kFixtures / fixture;
-    EXPECT_TRUE(fs::is_directory(source)) << source;
-    for (const std::string& file : kTaskFiles) {
-      const fs::path f = source / file;
-      if (fs::is_symlink(f)) {
-        fs::remove(dir / file);
-        fs::create_symlink(fs::canonical(f), dir / file);
-      } else if (fs::exists(f)) {
-        writeAll(dir / file, substituted(f));
-      }
-    }
-  }
-  for (const std::string& file : omit) fs::remove(dir / file);
-  return dir;
-}
-
 // The default rubric, or a copy with every time limit cut to `seconds` (for the cases whose code
 // never returns: the correct checks take well under a tenth of a second each).
 fs::path rubricFor(const fs::path& dir, double seconds = 0) {
   const fs::path standard = A6_DEFAULT_RUBRIC;
   if (seconds <= 0) return standard;
-  const std::regex limit("^time_limit *= *[0-9.]+", std::regex::multiline);
-  const fs::path fast = dir / "fast_rubric.toml";
-  writeAll(fast,
-           std::regex_replace(readAll(standard), limit, "time_limit = " + std::to_string(seconds)));
-  return fast;
+  return a6::test::staging::withTimeLimit(standard, dir, seconds);
 }
 
 // ---- what a result must be ----------------------------------------------------------------------
@@ -396,68 +338,12 @@ void expectOnlyGraderFiles(const fs::path& out) {
 
 // ---- archives -----------------------------------------------------------------------------------
 
-struct Entry {
-  enum class Type { File, Symlink, Hardlink };
-  Entry(std::string p, std::string d) : path(std::move(p)), data(std::move(d)) {}
-  Entry(std::string p, Type t, std::string target)
-      : path(std::move(p)), type(t), link(std::move(target)) {}
-  std::string path;
-  std::string data;
-  Type type = Type::File;
-  std::string link;
-};
-
-void writeArchive(const fs::path& out, bool zip, const std::vector<Entry>& entries) {
-  archive* a = archive_write_new();
-  if (zip) {
-    archive_write_set_format_zip(a);
-  } else {
-    archive_write_set_format_pax_restricted(a);
-    archive_write_add_filter_gzip(a);
-  }
-  ASSERT_EQ(archive_write_open_filename(a, out.c_str()), ARCHIVE_OK) << archive_error_string(a);
-  for (const Entry& e : entries) {
-    archive_entry* entry = archive_entry_new();
-    archive_entry_set_pathname(entry, e.path.c_str());
-    archive_entry_set_perm(entry, 0644);
-    archive_entry_set_mtime(entry, 1700000000, 0);
-    if (e.type == Entry::Type::Symlink) {
-      archive_entry_set_filetype(entry, AE_IFLNK);
-      archive_entry_set_symlink(entry, e.link.c_str());
-    } else if (e.type == Entry::Type::Hardlink) {
-      archive_entry_set_filetype(entry, AE_IFREG);
-      archive_entry_set_hardlink(entry, e.link.c_str());
-      archive_entry_set_size(entry, 0);
-    } else {
-      archive_entry_set_filetype(entry, AE_IFREG);
-      archive_entry_set_size(entry, static_cast<la_int64_t>(e.data.size()));
-    }
-    ASSERT_GE(archive_write_header(a, entry), ARCHIVE_WARN) << archive_error_string(a);
-    if (e.type == Entry::Type::File && !e.data.empty()) {
-      ASSERT_EQ(archive_write_data(a, e.data.data(), e.data.size()),
-                static_cast<la_ssize_t>(e.data.size()));
-    }
-    archive_entry_free(entry);
-  }
-  ASSERT_EQ(archive_write_close(a), ARCHIVE_OK) << archive_error_string(a);
-  archive_write_free(a);
-}
-
 // An archive whose spring.cpp (the solution's) only comes with paths that leave it: relative
 // ('..'), through a folder ('sub/../..'), and absolute. The other five files are the solution's.
 void checkTraversal(const std::string& name, bool zip) {
   const fs::path dir = caseDir(name);
-  const std::string spring = readAll(kSource / "solution" / "spring.cpp");
-  std::vector<Entry> entries = {{"../spring.cpp", spring},
-                                {"sub/../../spring.cpp", spring},
-                                {"../../../../a6_traversal_spring.cpp", spring},
-                                {"/tmp/a6_traversal_abs/spring.cpp", spring}};
-  for (const std::string& file : kTaskFiles) {
-    if (file != "spring.cpp") entries.push_back({file, readAll(kSource / "solution" / file)});
-  }
   const fs::path archive = dir / (zip ? "traversal.zip" : "traversal.tar.gz");
-  writeArchive(archive, zip, entries);
-  if (::testing::Test::HasFatalFailure()) return;
+  ASSERT_EQ(writeArchive(archive, zip, a6::test::staging::traversalEntries()), "");
   fs::remove_all("/tmp/a6_traversal_abs");
 
   const Outcome o = check(name, dir, archive, {{1}, ""});
@@ -619,8 +505,8 @@ TEST(Broken, CompileErrorInOneFile) {
 }
 
 TEST(Broken, MissingFile) {
-  checkFixture("missing_file",
-               {{4}, "cloth.cpp missing from the submission", 120, 0, {"cloth.cpp"}});
+  const auto omitted = a6::test::staging::omittedBy("missing_file");
+  checkFixture("missing_file", {{4}, "cloth.cpp missing from the submission", 120, 0, omitted});
 }
 
 // Archives and links.
@@ -639,16 +525,7 @@ TEST(Hostile, SymlinkInTheFolderToTheSolution) {
 
 TEST(Hostile, LinksInTheArchiveToTheSolution) {
   const fs::path dir = caseDir("symlink_archive");
-  std::vector<Entry> entries = {
-      {"spring.cpp", Entry::Type::Symlink, (kSource / "solution" / "spring.cpp").string()},
-      {"forces.cpp", Entry::Type::Hardlink, (kSource / "solution" / "forces.cpp").string()}};
-  for (const std::string& file : kTaskFiles) {
-    if (file != "spring.cpp" && file != "forces.cpp") {
-      entries.push_back({file, readAll(kSource / "solution" / file)});
-    }
-  }
-  writeArchive(dir / "links.tar.gz", false, entries);
-  if (HasFatalFailure()) return;
+  ASSERT_EQ(writeArchive(dir / "links.tar.gz", false, a6::test::staging::linkEntries()), "");
   const Outcome o = check("symlink_archive", dir, dir / "links.tar.gz", {{1, 2}, ""});
   const std::string output = o.graded.results.value("output", "");
   EXPECT_NE(output.find("Not found (the starter code was used): spring.cpp, forces.cpp"),

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "rubric.h"
+#include "staging.h"
 
 namespace {
 
@@ -35,10 +36,7 @@ using a6::grader::Rubric;
 using a6::grader::RubricItem;
 using nlohmann::json;
 
-const std::vector<std::string> kTaskFiles = {"spring.cpp",          "forces.cpp",
-                                             "time_stepping.cpp",   "cloth.cpp",
-                                             "particle_system.cpp", "joints.cpp"};
-const fs::path kSource = A6_SOURCE_DIR;
+using a6::test::staging::kSource;
 
 // A golden image (GoldenTask<n>.<image>) runs the code of every task in its manifest entry's
 // "tasks", so a mistake in one of them can fail it, and its points are charged to the image's
@@ -46,12 +44,7 @@ const fs::path kSource = A6_SOURCE_DIR;
 // the grader to that (it fails while images charge across tasks).
 constexpr bool kImagesMayCrossTasks = true;
 
-std::string readAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using a6::test::staging::readAll;
 
 struct Graded {
   int status = -1;
@@ -140,38 +133,12 @@ void expectCompleted(const Graded& g) {
   EXPECT_EQ(g.results["extra_data"]["errors"], json::array()) << summary(g);
 }
 
-// The folder a wrong version is graded as: the solution's six files, its own in their place.
+// The wrong versions are prepared in staging.h (batch_test.cpp grades them in a batch).
 fs::path stageWrong(const std::string& name, const fs::path& dir) {
-  const fs::path sub = dir / "submission";
-  fs::create_directories(sub);
-  for (const std::string& file : kTaskFiles) {
-    const fs::path wrong = kSource / "tests" / "wrong" / name / file;
-    fs::copy_file(fs::exists(wrong) ? wrong : kSource / "solution" / file, sub / file);
-  }
-  return sub;
+  return a6::test::staging::stageWrong(dir / "submission", name);
 }
-
-// The tasks an EXPECT file names ("fail: 3 4").
-std::set<int> failingTasks(const std::string& name) {
-  std::set<int> tasks;
-  std::istringstream in(readAll(kSource / "tests" / "wrong" / name / "EXPECT"));
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("fail:", 0) != 0) continue;
-    std::istringstream numbers(line.substr(5));
-    for (int t; numbers >> t;) tasks.insert(t);
-  }
-  return tasks;
-}
-
-std::vector<std::string> wrongVersions() {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(kSource / "tests" / "wrong", ec)) {
-    if (fs::exists(entry.path() / "EXPECT")) names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
+using a6::test::staging::failingTasks;
+using a6::test::staging::wrongVersions;
 
 TEST(Scores, TheSolutionGetsEveryPoint) {
   const fs::path dir = outDir("solution");

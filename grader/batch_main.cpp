@@ -1,0 +1,777 @@
+// a6_batch: grades every submission in a folder, each by its own a6_grade (grader/batch.h).
+//
+//   a6_batch INPUT --out DIR [-j N] [--timeout S] [--layout plain|gradescope|canvas] [--force]
+//            [--grader PATH] [--rubric FILE] [--kit FILE] [--seed N] [--time-budget S]
+//            [--keep-work]
+//
+// Writes DIR/<student>/ (results.json, report.html, grade.log: a6_grade's output, batch.json: the
+// marker) and DIR/gradebook.csv, shows a progress bar on stderr and prints a summary on stdout.
+//
+// Exit status: 0 when every submission has a grade (graded, or graded with a failed build); 1
+// when some have none (grader error, timed out, crashed); 2 for a bad command line or an input
+// folder that cannot be graded; 128+N when stopped by signal N (a re-run resumes).
+//
+// Runner notes
+// ------------
+// One a6_grade per submission, a child process in its own process group: a crash or a hang
+// costs that submission only, and --timeout kills the group. a6_grade's sandboxed children (the
+// compiler, the probe) are in sessions of their own but die with it (the sandbox sets
+// PR_SET_PDEATHSIG); whatever escaped them is re-parented to a6_grade (a child subreaper) and,
+// once a6_grade is gone, to this process (a subreaper too): any child of ours that is not a
+// running a6_grade is such a stray, and is killed. Each a6_grade gets PR_SET_PDEATHSIG as well,
+// so even `kill -9` of the batch stops the gradings it started.
+//
+// One thread: a loop that starts children, reaps them, enforces the time limits and redraws the
+// progress, ten times a second. Signals only set a flag that the loop reads.
+//
+// Resume: a submission's marker (batch.json: its fingerprint and outcome) is removed before it
+// is graded and written last, after a6_grade has exited and its results were read. A re-run
+// skips a submission whose marker holds the same fingerprint (the same input files, rubric,
+// seed and time budget) and a grade; everything else is graded (again).
+//
+// Other students' work: every a6_grade gets --hide for the input folder and the output folder
+// (its own work folder excepted), so that a submission's compiler and probe cannot read another
+// submission or its results. The student folders are all created before the first grading, so
+// that each a6_grade finds them to hide.
+//
+// Other students' processes: as root, the sandbox runs the compiler and the probe as an
+// unprivileged user with a process limit (RLIMIT_NPROC), and that limit counts every process of
+// the user, system-wide. Gradings that share a user share the headroom: a fork bomb in one, or
+// many compiles starting at once, would make another's compiler fail to start, and that
+// submission would lose a task for "did not compile". So each job slot gets its own user
+// (a6_grade --sandbox-uid): the uids below nobody's (65533, 65532, ...) that have no account, no
+// process and no other a6_batch holding them (a lock file each), checked to work; failing that,
+// all share nobody, and the summary says so.
+#include <fcntl.h>
+#include <grp.h>
+#include <pwd.h>
+#include <sys/file.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "batch.h"
+#include "report.h"  // writeFileAtomically
+
+#ifndef A6_DEFAULT_RUBRIC
+#define A6_DEFAULT_RUBRIC ""
+#endif
+
+namespace fs = std::filesystem;
+using namespace a6::grader;
+using namespace a6::grader::batch;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kDefaultTimeout = 900;  // s per submission: a6_grade's own budget is 420 s
+constexpr const char* kMarker = "batch.json";
+constexpr const char* kLog = "grade.log";
+
+volatile std::sig_atomic_t gSignal = 0;
+extern "C" void onSignal(int signo) { gSignal = signo; }
+
+std::string readAll(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+fs::path besideProgram(const std::string& name) {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::path(name) : self.parent_path() / name;
+}
+
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string oneDecimal(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", x);
+  return buf;
+}
+
+std::string points(const Outcome& o) {
+  if (!o.total) return "";
+  std::ostringstream out;
+  const double ec = o.extraCredit.value_or(0);
+  out << (*o.total - ec) << "/" << o.max.value_or(0);
+  if (ec > 0) out << " +" << ec;
+  return out.str();
+}
+
+bool hasGrade(const Outcome& o) { return o.status == kGraded || o.status == kBuildFailed; }
+
+struct Options {
+  std::string input;
+  std::string out;
+  std::string layout;
+  std::string grader;
+  std::string rubric;
+  std::string kit;
+  std::optional<std::uint64_t> seed;
+  std::optional<double> timeBudget;
+  int jobs = 0;
+  double timeout = kDefaultTimeout;
+  bool force = false;
+  bool keepWork = false;
+};
+
+// The progress on stderr: a bar redrawn in place on a terminal, one line per finished
+// submission otherwise (CI logs).
+class Progress {
+ public:
+  Progress(int total, int done, int toRun, int jobs, bool tty)
+      : total_(total), done_(done), toRun_(toRun), jobs_(jobs), tty_(tty) {}
+
+  void finished(const Submission& s, const Outcome& o) {
+    ++done_;
+    ++ranNow_;
+    secondsNow_ += o.seconds;
+    if (!hasGrade(o)) ++failed_;
+    std::string line = s.key + ": " + o.status;
+    if (o.total) line += ", " + points(o);
+    line += " (" + oneDecimal(o.seconds) + " s)";
+    if (!o.reason.empty() && o.status != kGraded) line += ": " + o.reason;
+    if (tty_) {
+      // Problems scroll above the bar; the rest only moves the bar.
+      if (!hasGrade(o) || o.status == kBuildFailed) {
+        std::fprintf(stderr, "\r\033[K%s\n", line.c_str());
+      }
+      draw();
+    } else {
+      std::fprintf(stderr, "[%*d/%d] %s; %s\n", width(), done_, total_, line.c_str(),
+                   counters().c_str());
+    }
+  }
+
+  void tick() {
+    if (tty_ && secondsSince(lastDraw_) > 0.5) draw();
+  }
+
+  void clear() {
+    if (tty_) std::fprintf(stderr, "\r\033[K");
+  }
+
+ private:
+  int width() const { return static_cast<int>(std::to_string(total_).size()); }
+
+  std::string counters() const {
+    std::string text = std::to_string(failed_) + " failed";
+    const int left = toRun_ - ranNow_;
+    if (left <= 0) return text;
+    if (ranNow_ == 0) return text + ", estimating the time left";
+    // The mean grading so far, for what is left, `jobs` at a time.
+    const double mean = secondsNow_ / ranNow_;
+    return text + ", ~" + duration(mean * left / std::min(jobs_, left)) + " left";
+  }
+
+  void draw() {
+    constexpr int kBar = 24;
+    const int filled = total_ > 0 ? done_ * kBar / total_ : kBar;
+    std::fprintf(stderr, "\r\033[K[%s%s] %d/%d graded, %s", std::string(filled, '#').c_str(),
+                 std::string(kBar - filled, '.').c_str(), done_, total_, counters().c_str());
+    std::fflush(stderr);
+    lastDraw_ = Clock::now();
+  }
+
+  int total_, done_, toRun_, jobs_;
+  int ranNow_ = 0, failed_ = 0;
+  double secondsNow_ = 0;  // of the gradings of this run
+  bool tty_;
+  Clock::time_point lastDraw_{};
+};
+
+// The sandbox users of the job slots (see "Other students' processes"): `jobs` uids below
+// nobody's without an account, a running process or another a6_batch's claim, each checked by
+// running /bin/true as it.
+// Empty when not root (the sandbox then changes no user) or when they do not work (`note` says
+// why).
+std::vector<uid_t> sandboxUids(int jobs, std::string& note) {
+  if (geteuid() != 0 || jobs < 2) return {};
+  std::set<long> busy;  // real uids of running processes
+  std::error_code ec;
+  for (fs::directory_iterator it("/proc", ec), end; !ec && it != end; it.increment(ec)) {
+    std::istringstream status(readAll(it->path() / "status"));
+    for (std::string line; std::getline(status, line);) {
+      if (line.rfind("Uid:", 0) == 0) {
+        busy.insert(std::strtol(line.c_str() + 4, nullptr, 10));
+        break;
+      }
+    }
+  }
+  auto works = [](uid_t uid) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+      const gid_t nogroup = 65534;
+      if (setgroups(0, nullptr) != 0 || setgid(nogroup) != 0 || setuid(uid) != 0) _exit(126);
+      const int devnull = ::open("/dev/null", O_WRONLY);
+      if (devnull >= 0) {
+        dup2(devnull, STDOUT_FILENO);
+        dup2(devnull, STDERR_FILENO);
+      }
+      execl("/bin/true", "true", static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    int status = 0;
+    return pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) &&
+           WEXITSTATUS(status) == 0;
+  };
+  // Another a6_batch on this machine holds its uids by a lock file each, for its whole run.
+  std::error_code tmpError;
+  const fs::path lockDir =
+      access("/run/lock", W_OK) == 0 ? fs::path("/run/lock") : fs::temp_directory_path(tmpError);
+  auto claim = [&](uid_t uid) {
+    const fs::path file = lockDir / ("a6_batch.uid" + std::to_string(uid) + ".lock");
+    const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) return false;
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd);
+      return false;
+    }
+    return true;  // held until this process ends
+  };
+  std::vector<uid_t> uids;
+  for (uid_t uid = 65533; uid > 60000 && static_cast<int>(uids.size()) < jobs; --uid) {
+    if (getpwuid(uid) != nullptr || busy.count(static_cast<long>(uid)) || !claim(uid)) continue;
+    if (!works(uid)) {
+      note = "the sandbox could not run as uid " + std::to_string(uid) +
+             ", so all gradings ran as nobody and shared its process limit (a fork bomb in one "
+             "could make another's compiler fail)";
+      return {};
+    }
+    uids.push_back(uid);
+  }
+  if (static_cast<int>(uids.size()) < jobs) {
+    note =
+        "not enough free uids below 65534 for one sandbox user per job: all gradings ran as "
+        "nobody";
+    return {};
+  }
+  return uids;
+}
+
+// One a6_grade at work.
+struct Running {
+  std::size_t index;  // into the submissions
+  int slot;           // its job slot: which sandbox user it has
+  pid_t pid;
+  Clock::time_point start;
+  Clock::time_point deadline;
+  bool timedOut = false;
+};
+
+class Batch {
+ public:
+  Batch(const Options& options, Inventory inventory, fs::path out, fs::path grader,
+        std::string fingerprintOptions, int jobs, std::vector<uid_t> sandboxUids)
+      : o_(options),
+        jobs_(jobs),
+        sandboxUids_(std::move(sandboxUids)),
+        slotBusy_(static_cast<std::size_t>(jobs), false),
+        inv_(std::move(inventory)),
+        out_(std::move(out)),
+        grader_(std::move(grader)),
+        fingerprintOptions_(std::move(fingerprintOptions)),
+        outcomes_(inv_.submissions.size()),
+        skipped_(inv_.submissions.size(), false) {}
+
+  int run() {
+    const auto start = Clock::now();
+    // What is graded already, unchanged (or everything, with --force).
+    std::vector<std::size_t> queue;
+    for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
+      const Submission& s = inv_.submissions[i];
+      std::error_code ec;
+      fs::create_directories(out_ / s.key, ec);  // before any grading: see "Other students' work"
+      fingerprints_.push_back(fingerprint(s, fingerprintOptions_));
+      if (!o_.force) {
+        if (auto done = outcomeOfMarker(readAll(out_ / s.key / kMarker), fingerprints_[i]);
+            done && hasGrade(*done)) {
+          outcomes_[i] = *done;
+          skipped_[i] = true;
+          continue;
+        }
+      }
+      queue.push_back(i);
+    }
+    writeGradebook();
+    const int jobs = jobs_;
+    const int skipped = static_cast<int>(std::count(skipped_.begin(), skipped_.end(), true));
+    Progress progress(static_cast<int>(inv_.submissions.size()), skipped,
+                      static_cast<int>(queue.size()), jobs, isatty(STDERR_FILENO) == 1);
+
+    std::size_t next = 0;
+    auto lastSweep = Clock::now();
+    while (next < queue.size() || !running_.empty()) {
+      if (gSignal != 0) {
+        progress.clear();
+        return interrupted(static_cast<int>(gSignal));
+      }
+      while (running_.size() < static_cast<std::size_t>(jobs) && next < queue.size()) {
+        const std::size_t i = queue[next++];
+        if (!launch(i)) {
+          ranSeconds_.push_back(outcomes_[i]->seconds);
+          progress.finished(inv_.submissions[i], *outcomes_[i]);
+          writeGradebook();
+        }
+      }
+      // Reap: our a6_grade children, and strays re-parented to us.
+      int status = 0;
+      for (pid_t pid; (pid = waitpid(-1, &status, WNOHANG)) > 0;) {
+        const auto r = std::find_if(running_.begin(), running_.end(),
+                                    [pid](const Running& x) { return x.pid == pid; });
+        if (r == running_.end()) continue;
+        const Running done = *r;
+        running_.erase(r);
+        slotBusy_[static_cast<std::size_t>(done.slot)] = false;
+        finish(done, status);
+        progress.finished(inv_.submissions[done.index], *outcomes_[done.index]);
+        writeGradebook();
+      }
+      // The time limit: the whole process group, at once.
+      for (Running& r : running_) {
+        if (!r.timedOut && Clock::now() >= r.deadline) {
+          r.timedOut = true;
+          kill(-r.pid, SIGKILL);
+          kill(r.pid, SIGKILL);
+        }
+      }
+      if (secondsSince(lastSweep) > 1) {
+        killStrays();
+        lastSweep = Clock::now();
+      }
+      progress.tick();
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));  // a signal cuts it short
+    }
+    progress.clear();
+    killStrays();
+    return summary(secondsSince(start), jobs);
+  }
+
+ private:
+  // Starts a6_grade on submission i; false when it could not (its outcome is then set).
+  bool launch(std::size_t i) {
+    Submission& s = inv_.submissions[i];
+    const fs::path dir = out_ / s.key;
+    std::error_code ec;
+    // Nothing of an earlier run may pass for this one's: the marker goes first.
+    for (const char* name : {kMarker, "results.json", "report.html", kLog})
+      fs::remove(dir / name, ec);
+    fs::remove_all(dir / "work", ec);
+    if (!s.files.empty()) {
+      if (const std::string e = stage(s, dir / "submission"); !e.empty()) {
+        Outcome o;
+        o.status = kGraderError;
+        o.reason = "could not stage the files: " + e;
+        outcomes_[i] = o;
+        return false;
+      }
+    }
+
+    std::vector<std::string> args = {grader_.string(), s.path.string(), "--out",
+                                     dir.string(),     "--jobs",        "1"};
+    if (!o_.rubric.empty()) args.insert(args.end(), {"--rubric", fs::absolute(o_.rubric).string()});
+    if (!o_.kit.empty()) args.insert(args.end(), {"--kit", fs::absolute(o_.kit).string()});
+    if (o_.seed) args.insert(args.end(), {"--seed", std::to_string(*o_.seed)});
+    if (o_.timeBudget) {
+      std::ostringstream budget;
+      budget << *o_.timeBudget;
+      args.insert(args.end(), {"--time-budget", budget.str()});
+    }
+    args.insert(args.end(), {"--hide", fs::absolute(o_.input).string(), "--hide", out_.string()});
+    const int slot =
+        static_cast<int>(std::find(slotBusy_.begin(), slotBusy_.end(), false) - slotBusy_.begin());
+    if (static_cast<std::size_t>(slot) < sandboxUids_.size()) {
+      args.insert(args.end(), {"--sandbox-uid", std::to_string(sandboxUids_[slot])});
+    }
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+
+    const int log = ::open((dir / kLog).c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    const int devnull = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+    if (log < 0 || devnull < 0) {
+      Outcome o;
+      o.status = kGraderError;
+      o.reason = "cannot write " + (dir / kLog).string() + ": " + std::strerror(errno);
+      outcomes_[i] = o;
+      if (log >= 0) ::close(log);
+      if (devnull >= 0) ::close(devnull);
+      return false;
+    }
+    // The log opens with the command, so that a TA can run the grading again by hand.
+    std::string command = "a6_batch ran:";
+    for (const std::string& a : args) {
+      const bool plain = a.find_first_not_of(
+                             "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                             "0123456789-_./=:+@") == std::string::npos;
+      command += " " + (plain ? a : "'" + a + "'");  // (a name with a quote is shown as is)
+    }
+    command += "\n";
+    if (write(log, command.data(), command.size()) < 0) {
+    }
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid == 0) {
+      // The child: its own process group, dead with us, default signals, output to the log.
+      setpgid(0, 0);
+      prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (getppid() != parent) _exit(127);
+      std::signal(SIGINT, SIG_DFL);
+      std::signal(SIGTERM, SIG_DFL);
+      std::signal(SIGHUP, SIG_DFL);
+      std::signal(SIGPIPE, SIG_DFL);
+      dup2(devnull, STDIN_FILENO);
+      dup2(log, STDOUT_FILENO);
+      dup2(log, STDERR_FILENO);
+      execv(argv[0], argv.data());
+      const std::string why =
+          std::string("a6_batch: cannot run ") + argv[0] + ": " + std::strerror(errno) + "\n";
+      if (write(STDERR_FILENO, why.data(), why.size()) < 0) {
+      }
+      _exit(127);
+    }
+    ::close(log);
+    ::close(devnull);
+    if (pid < 0) {
+      Outcome o;
+      o.status = kGraderError;
+      o.reason = std::string("cannot start a6_grade: ") + std::strerror(errno);
+      outcomes_[i] = o;
+      return false;
+    }
+    setpgid(pid, pid);  // here too: a time limit may kill the group before the child set it
+    slotBusy_[static_cast<std::size_t>(slot)] = true;
+    const auto now = Clock::now();
+    running_.push_back({i, slot, pid, now,
+                        now + std::chrono::duration_cast<Clock::duration>(
+                                  std::chrono::duration<double>(o_.timeout))});
+    return true;
+  }
+
+  // a6_grade ended (status from waitpid): its outcome, the marker, its work folder.
+  void finish(const Running& r, int status) {
+    const Submission& s = inv_.submissions[r.index];
+    const fs::path dir = out_ / s.key;
+    Outcome o;
+    if (r.timedOut) {
+      o.status = kTimedOut;
+      o.reason = "stopped after " + oneDecimal(o_.timeout) + " s (--timeout)";
+    } else if (WIFSIGNALED(status)) {
+      o.status = kCrashed;
+      o.reason = std::string("a6_grade was killed by ") + strsignal(WTERMSIG(status)) + " (see " +
+                 kLog + ")";
+    } else {
+      const int code = WEXITSTATUS(status);
+      const Outcome fromResults = outcomeOfResults(readAll(dir / "results.json"));
+      if (code == 0) {
+        o = fromResults;
+      } else if (code == 1) {
+        o.status = kGraderError;
+        o.reason = !fromResults.reason.empty() && !hasGrade(fromResults)
+                       ? fromResults.reason
+                       : "a6_grade failed (exit status 1; see " + std::string(kLog) + ")";
+      } else if (code == 2) {
+        o.status = kGraderError;
+        o.reason = "a6_grade refused its command line (see " + std::string(kLog) + ")";
+      } else if (code == 127) {
+        o.status = kGraderError;
+        o.reason = "a6_grade could not be run (see " + std::string(kLog) + ")";
+      } else {
+        o.status = kCrashed;
+        o.reason = "a6_grade exited with " + std::to_string(code) + " (see " + kLog + ")";
+      }
+    }
+    o.seconds = secondsSince(r.start);
+    std::error_code ec;
+    if (!o_.keepWork) fs::remove_all(dir / "work", ec);  // objects and the probe: megabytes
+    if (hasGrade(o)) {
+      if (const std::string e =
+              writeFileAtomically(dir / kMarker, markerJson(fingerprints_[r.index], o));
+          !e.empty()) {
+        notes_.push_back(s.key + ": " + e + " (it will be graded again by a re-run)");
+      }
+    }
+    outcomes_[r.index] = o;
+    ranSeconds_.push_back(o.seconds);
+  }
+
+  void writeGradebook() {
+    std::vector<std::pair<const Submission*, const Outcome*>> rows;
+    for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
+      if (outcomes_[i]) rows.emplace_back(&inv_.submissions[i], &*outcomes_[i]);
+    }
+    if (const std::string e = writeFileAtomically(out_ / "gradebook.csv", gradebookCsv(rows));
+        !e.empty()) {
+      std::fprintf(stderr, "\na6_batch: %s\n", e.c_str());
+    }
+  }
+
+  // Children of ours that are no running a6_grade: what a dead a6_grade's probe left behind.
+  void killStrays() {
+    const pid_t self = getpid();
+    std::error_code ec;
+    for (fs::directory_iterator it("/proc", ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
+      const std::string stat = readAll(it->path() / "stat");
+      const std::size_t close = stat.rfind(')');  // "pid (comm) state ppid ..."
+      if (close == std::string::npos) continue;
+      std::istringstream rest(stat.substr(close + 1));
+      char state = 0;
+      long ppid = 0;
+      rest >> state >> ppid;
+      const pid_t pid = static_cast<pid_t>(std::stol(name));
+      if (ppid != self) continue;
+      if (std::any_of(running_.begin(), running_.end(),
+                      [pid](const Running& r) { return r.pid == pid; }))
+        continue;
+      kill(-pid, SIGKILL);  // its group, if it leads one
+      kill(pid, SIGKILL);
+    }
+    while (waitpid(-1, nullptr, WNOHANG) > 0) {
+    }
+  }
+
+  int interrupted(int signo) {
+    for (const Running& r : running_) {
+      kill(-r.pid, SIGKILL);
+      kill(r.pid, SIGKILL);
+    }
+    for (const Running& r : running_) waitpid(r.pid, nullptr, 0);
+    const std::size_t stopped = running_.size();
+    running_.clear();
+    killStrays();
+    writeGradebook();
+    std::size_t graded = 0;
+    for (const auto& o : outcomes_) graded += o && hasGrade(*o) ? 1 : 0;
+    std::fprintf(stderr,
+                 "a6_batch: stopped by %s: %zu of %zu submissions have a grade (in %s); %zu "
+                 "running gradings were stopped.\n"
+                 "To grade the rest, run the same command again: what was graded is skipped.\n",
+                 signo == SIGINT    ? "SIGINT (Ctrl-C)"
+                 : signo == SIGTERM ? "SIGTERM"
+                                    : "SIGHUP",
+                 graded, inv_.submissions.size(), (out_ / "gradebook.csv").c_str(), stopped);
+    return 128 + signo;
+  }
+
+  int summary(double wall, int jobs) {
+    std::map<std::string, int> count;
+    std::vector<double> totals;
+    std::ostringstream problems;
+    for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
+      if (!outcomes_[i]) continue;
+      const Outcome& o = *outcomes_[i];
+      if (o.total) totals.push_back(*o.total);
+      if (o.status != kGraded) {
+        problems << "    " << inv_.submissions[i].key << ": " << o.status
+                 << (o.reason.empty() ? "" : ": " + o.reason) << "\n";
+      }
+    }
+    for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
+      // Counted by this run's outcome; the skipped ones apart.
+      if (outcomes_[i] && !skipped_[i]) ++count[outcomes_[i]->status];
+    }
+    std::ostringstream out;
+    out << "a6_batch: " << inv_.submissions.size() << " submissions in " << o_.input << " ("
+        << toString(inv_.layout) << " layout), results in " << out_.string() << "\n";
+    for (const char* status : {kGraded, kBuildFailed, kGraderError, kTimedOut, kCrashed}) {
+      out << "  " << std::left << std::setw(14) << status << std::right << std::setw(5)
+          << count[status] << "\n";
+    }
+    const auto skipped = std::count(skipped_.begin(), skipped_.end(), true);
+    out << "  " << std::left << std::setw(14) << "skipped" << std::right << std::setw(5) << skipped
+        << (skipped > 0 ? "  (graded by an earlier run and unchanged; --force regrades)" : "")
+        << "\n";
+    out << "  batch wall time " << duration(wall) << " (" << oneDecimal(wall) << " s) with -j "
+        << jobs;
+    if (!ranSeconds_.empty()) {
+      double sum = 0, max = 0;
+      for (const double s : ranSeconds_) {
+        sum += s;
+        max = std::max(max, s);
+      }
+      out << "; per submission: mean " << oneDecimal(sum / static_cast<double>(ranSeconds_.size()))
+          << " s, max " << oneDecimal(max) << " s (" << ranSeconds_.size()
+          << " gradings in this run)";
+    }
+    out << "\n";
+    if (!totals.empty()) {
+      out << "  totals (points with extra credit) of " << totals.size() << " submissions:\n"
+          << histogram(totals);
+    }
+    if (!problems.str().empty()) {
+      out << "  to look at (no grade, or a task file missing or broken):\n" << problems.str();
+    }
+    std::vector<std::string> notes = inv_.notes;
+    for (const Submission& s : inv_.submissions) {
+      for (const std::string& n : s.notes) notes.push_back(s.key + ": " + n);
+    }
+    notes.insert(notes.end(), notes_.begin(), notes_.end());
+    if (!notes.empty()) {
+      out << "  notes:\n";
+      for (const std::string& n : notes) out << "    " << n << "\n";
+    }
+    out << "  gradebook: " << (out_ / "gradebook.csv").string() << "\n";
+    std::fputs(out.str().c_str(), stdout);
+    std::fflush(stdout);
+    for (const auto& o : outcomes_) {
+      if (!o || !hasGrade(*o)) return 1;
+    }
+    return 0;
+  }
+
+  const Options& o_;
+  int jobs_;
+  std::vector<uid_t> sandboxUids_;  // per job slot; empty: a6_grade's default (nobody)
+  std::vector<bool> slotBusy_;
+  Inventory inv_;
+  fs::path out_;
+  fs::path grader_;
+  std::string fingerprintOptions_;
+  std::vector<std::optional<Outcome>> outcomes_;
+  std::vector<std::string> fingerprints_;
+  std::vector<Running> running_;
+  std::vector<double> ranSeconds_;  // wall-clock seconds of each grading of this run
+  std::vector<bool> skipped_;       // graded by an earlier run, unchanged
+  std::vector<std::string> notes_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{
+      "a6_batch: grades a folder of Assignment 6 submissions, one a6_grade each "
+      "(docs/instructor.md, \"Batch grading\")"};
+  app.add_option("input", options.input,
+                 "the folder of submissions: one sub-folder or archive per student, or an "
+                 "unzipped Gradescope or Canvas export")
+      ->required();
+  app.add_option("--out", options.out, "where the results and gradebook.csv go (created)")
+      ->required();
+  app.add_option("-j,--jobs", options.jobs, "submissions graded at once (default: one per core)")
+      ->check(CLI::Range(1, 256));
+  app.add_option("--timeout", options.timeout,
+                 "seconds one submission may take before its a6_grade is killed (default 900)")
+      ->check(CLI::Range(1.0, 86400.0));
+  app.add_option("--layout", options.layout,
+                 "plain, gradescope or canvas (default: recognised from the folder)")
+      ->check(CLI::IsMember({"plain", "gradescope", "canvas"}));
+  app.add_flag("--force", options.force, "grade everything again, even what is graded already");
+  app.add_option("--grader", options.grader,
+                 "the a6_grade to run (default: the one beside a6_batch)");
+  app.add_option("--rubric", options.rubric, "passed to a6_grade");
+  app.add_option("--kit", options.kit, "passed to a6_grade");
+  app.add_option("--seed", options.seed, "passed to a6_grade (default: its own, per submission)");
+  app.add_option("--time-budget", options.timeBudget, "passed to a6_grade")
+      ->check(CLI::Range(1.0, 86400.0));
+  app.add_flag("--keep-work", options.keepWork,
+               "keep each a6_grade's work folder (objects, probe; removed by default)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+  auto refuse = [](const std::string& why) {
+    std::fprintf(stderr, "a6_batch: %s\n", why.c_str());
+    return 2;
+  };
+
+  // The input, the output, the grader.
+  std::error_code ec;
+  const fs::path input = fs::absolute(options.input).lexically_normal();
+  if (!fs::exists(input, ec)) return refuse("no such folder: " + options.input);
+  if (!fs::is_directory(input, ec)) {
+    return refuse(options.input +
+                  " is not a folder (unzip an export first; a6_grade grades one "
+                  "archive on its own)");
+  }
+  const fs::path out = fs::absolute(options.out).lexically_normal();
+  if (fs::exists(out, ec) && fs::equivalent(out, input, ec)) {
+    return refuse("--out must not be the input folder itself");
+  }
+  fs::create_directories(out, ec);
+  if (ec) return refuse("cannot create " + out.string() + ": " + ec.message());
+  const fs::path grader =
+      options.grader.empty() ? besideProgram("a6_grade") : fs::absolute(options.grader);
+  if (access(grader.c_str(), X_OK) != 0) {
+    return refuse("cannot run the grader " + grader.string() +
+                  " (build a6_grade beside a6_batch, or give --grader)");
+  }
+  if (!options.rubric.empty() && !fs::is_regular_file(options.rubric, ec)) {
+    return refuse("no rubric file " + options.rubric);
+  }
+
+  // One batch at a time per output folder (a second would grade the same students at once).
+  const fs::path lockFile = out / ".a6_batch.lock";
+  const int lock = ::open(lockFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0) {
+    return refuse("another a6_batch is writing to " + out.string() + " (" + lockFile.string() +
+                  ")");
+  }
+
+  // The submissions.
+  const Layout layout =
+      options.layout.empty() ? detectLayout(input, out) : *layoutNamed(options.layout);
+  Inventory inventory = findSubmissions(input, layout, out);
+  if (!inventory.error.empty()) return refuse(inventory.error);
+  if (inventory.submissions.empty()) {
+    for (const std::string& n : inventory.notes) std::fprintf(stderr, "  %s\n", n.c_str());
+    return refuse("no submission found in " + options.input + " (read as the " + toString(layout) +
+                  " layout; --layout chooses another)");
+  }
+
+  // What else decides a grade, for the fingerprints: a change regrades.
+  std::ostringstream decides;
+  const fs::path rubric =
+      options.rubric.empty() ? fs::path(A6_DEFAULT_RUBRIC) : fs::path(options.rubric);
+  decides << "rubric=" << (rubric.empty() ? std::string("default") : readAll(rubric)) << "\n"
+          << "seed=" << (options.seed ? std::to_string(*options.seed) : "default") << "\n"
+          << "time-budget="
+          << (options.timeBudget ? std::to_string(*options.timeBudget) : "default") << "\n";
+
+  std::signal(SIGPIPE, SIG_IGN);
+  struct sigaction action {};
+  action.sa_handler = onSignal;
+  sigemptyset(&action.sa_mask);
+  for (const int signo : {SIGINT, SIGTERM, SIGHUP}) sigaction(signo, &action, nullptr);
+  // Whatever a dead a6_grade's processes leave is re-parented here, to be killed.
+  prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
+
+  options.input = input.string();
+  const int jobs = options.jobs > 0
+                       ? options.jobs
+                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  std::string uidNote;
+  std::vector<uid_t> uids = sandboxUids(jobs, uidNote);
+  if (!uidNote.empty()) inventory.notes.push_back(uidNote);
+  Batch batch(options, std::move(inventory), out, grader, decides.str(), jobs, std::move(uids));
+  return batch.run();
+}
