@@ -401,16 +401,21 @@ std::string number(double value) {
 }  // namespace
 
 std::string publicRubricToml(const Rubric& rubric) {
-  double total = 0;
+  double total = 0, hidden = 0;
   for (const RubricItem& item : rubric.items) {
-    if (!item.onHiddenChecks() && !item.extraCredit) total += item.points;
+    if (item.extraCredit) continue;
+    (item.onHiddenChecks() ? hidden : total) += item.points;
   }
   std::ostringstream out;
   out << "# The public rubric: the graders' rubric without the items of the hidden checks, which\n"
          "# run only when your submission is graded. Written by a6_grade --public-rubric from "
       << rubric.file.filename().string()
       << ";\n# do not edit (scripts/check.sh grades your files with it).\n\n";
-  out << "title = " << quoted(rubric.title) << "\n";
+  // The title heads the report: it says that the grader checks more than this rubric does.
+  std::ostringstream title;
+  title << rubric.title;
+  if (hidden > 0) title << " (public checks; the grader's hidden checks add " << hidden << " points)";
+  out << "title = " << quoted(title.str()) << "\n";
   out << "total = " << number(total) << "\n";
   for (const RubricItem& item : rubric.items) {
     if (item.onHiddenChecks()) continue;

@@ -251,6 +251,58 @@ TEST(DefaultRubric, LoadsAndTotalsExactly100) {
   EXPECT_TRUE(delayed) << "the default rubric shows delayed visibility";
 }
 
+// The student release's rubric: the default one without the items on hidden checks, every other
+// item as it was, and a title that says the grader checks more.
+TEST(PublicRubric, LeavesOutTheHiddenItemsAndKeepsTheOthersAsTheyWere) {
+  const Rubric full = loadRubric(A6_DEFAULT_RUBRIC);
+  ASSERT_TRUE(full.ok()) << full.error;
+  const Rubric pub = parseRubric(publicRubricToml(full), "public.toml");
+  ASSERT_TRUE(pub.ok()) << pub.error << "\n" << publicRubricToml(full);
+
+  double hiddenPoints = 0;
+  std::vector<const RubricItem*> kept;
+  for (const RubricItem& item : full.items) {
+    if (item.onHiddenChecks()) {
+      EXPECT_TRUE(item.extraCredit || item.visibility != Visibility::Visible)
+          << item.name << ": a hidden check's result is shown only after the due date";
+      if (!item.extraCredit) hiddenPoints += item.points;
+    } else {
+      kept.push_back(&item);
+    }
+  }
+  EXPECT_GT(hiddenPoints, 0) << "the default rubric has hidden checks";
+  EXPECT_EQ(pub.totalPoints, full.totalPoints - hiddenPoints);
+  ASSERT_EQ(pub.items.size(), kept.size());
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    const RubricItem& a = *kept[k];
+    const RubricItem& b = pub.items[k];
+    EXPECT_EQ(b.name, a.name);
+    EXPECT_EQ(b.task, a.task);
+    EXPECT_EQ(b.tests, a.tests);
+    EXPECT_EQ(b.points, a.points);
+    EXPECT_EQ(b.allOrNothing, a.allOrNothing);
+    EXPECT_EQ(b.extraCredit, a.extraCredit);
+    EXPECT_EQ(b.visibility, a.visibility);
+    EXPECT_EQ(b.timeLimitSeconds, a.timeLimitSeconds);
+    EXPECT_FALSE(b.onHiddenChecks());
+  }
+  EXPECT_NE(pub.title.find("hidden checks add 13 points"), std::string::npos) << pub.title;
+}
+
+TEST(PublicRubric, AnItemIsOnHiddenChecksOnlyWhenAllItsSuitesAre) {
+  RubricItem item;
+  item.tests = {"Task1Hidden.*"};
+  EXPECT_TRUE(item.onHiddenChecks());
+  item.tests = {"GoldenTask6Hidden.car_f90", "Task2Hidden.X"};
+  EXPECT_TRUE(item.onHiddenChecks());
+  item.tests = {"Task1Hidden.*", "Task1Spring.*"};
+  EXPECT_FALSE(item.onHiddenChecks());
+  item.tests = {"GoldenTask6.*"};
+  EXPECT_FALSE(item.onHiddenChecks());
+  item.tests = {};
+  EXPECT_FALSE(item.onHiddenChecks());
+}
+
 #if defined(A6_GRADE_COMMAND) && defined(A6_TESTS_COMMAND)
 // The physics suite's test names, from a6_tests --gtest_list_tests ("Suite.\n  Test\n").
 std::vector<std::string> physicsTests() {
