@@ -47,8 +47,12 @@ class Draw {
     const double a = uniform(0, 2 * M_PI);
     return Vec2(std::cos(a), std::sin(a));
   }
-  /// Appended to every failure: how to regrade with the same inputs.
-  std::string seed() const { return " [random inputs, seed " + std::to_string(seed_) + "]"; }
+  /// Appended to every failure: how to draw the same inputs again (a6_grade derives GoogleTest's
+  /// seed from its own --seed, which the report records; a6_tests takes it directly).
+  std::string seed() const {
+    return " [random inputs: --gtest_random_seed=" + std::to_string(seed_) +
+           "; a6_grade --seed with the report's seed draws the same]";
+  }
 
  private:
   std::uint64_t seed_ = 0;
