@@ -33,6 +33,7 @@
 
 #include "report.h"
 #include "rubric.h"
+#include "run_command.h"
 #include "staging.h"
 
 namespace {
@@ -47,27 +48,11 @@ using nlohmann::json;
 
 // ---- running a6_batch ---------------------------------------------------------------------------
 
-struct Ran {
-  int status = -1;
-  std::string output;  // stdout and stderr
-  double seconds = 0;
-};
+using Ran = a6::test::CommandRun;
 
 std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
-Ran run(const std::string& command) {
-  Ran r;
-  const auto start = std::chrono::steady_clock::now();
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return r;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
-  const int raw = pclose(pipe);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
+Ran run(const std::string& command) { return a6::test::runCommand(command); }
 
 Ran batchRun(const fs::path& input, const fs::path& out, const std::string& extra = "") {
   return run(std::string(A6_BATCH_COMMAND) + " " + quoted(input) + " --out " + quoted(out) + " " +

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "rubric.h"
+#include "run_command.h"
 
 namespace {
 
@@ -40,11 +41,7 @@ const std::vector<std::string> kTaskFiles = {"spring.cpp",          "forces.cpp"
                                              "time_stepping.cpp",   "cloth.cpp",
                                              "particle_system.cpp", "joints.cpp"};
 
-struct Outcome {
-  int status = -1;     // exit status, or 128 + signal
-  std::string output;  // stdout and stderr
-  double seconds = 0;
-};
+using Outcome = a6::test::CommandRun;
 
 std::string quote(const std::string& s) {
   std::string q = "'";
@@ -53,19 +50,7 @@ std::string quote(const std::string& s) {
 }
 std::string quote(const fs::path& p) { return quote(p.string()); }
 
-Outcome run(const std::string& command) {
-  Outcome r;
-  const auto start = Clock::now();
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return r;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) r.output.append(buffer, n);
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : WIFSIGNALED(raw) ? 128 + WTERMSIG(raw) : -1;
-  r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  return r;
-}
+Outcome run(const std::string& command) { return a6::test::runCommand(command); }
 
 // CPU time of every child process reaped so far (and of theirs), s.
 double childCpuSeconds() {
