@@ -252,35 +252,33 @@ void registerImages(const golden::Manifest& manifest, const std::string& suffix)
   }
 }
 
-}  // namespace
-
-// Registers one test per manifest image (false: the manifest could not be read, and one
-// failing test, Manifest.Reads, says why).
-bool registerGoldenChecks(const std::string& failuresDir) {
-  config().failures = std::filesystem::absolute(failuresDir).lexically_normal().string();
-  golden::ManifestResult read = golden::readManifest(config().manifest);
+// Registers the images of the manifest at `path` in suites GoldenTask<N><suffix> (false: it could
+// not be read, and one failing test, Manifest.<errorTest>, says why).
+bool registerManifest(const std::string& path, const std::string& suffix,
+                      const char* errorTest) {
+  golden::ManifestResult read = golden::readManifest(path);
   if (!read) {
     const std::string error = read.error;
-    ::testing::RegisterTest("Manifest", "Reads", nullptr, nullptr, __FILE__, __LINE__,
+    ::testing::RegisterTest("Manifest", errorTest, nullptr, nullptr, __FILE__, __LINE__,
                             [error]() -> ::testing::Test* { return new ManifestError(error); });
     return false;
   }
-  registerImages(read.manifest, "");
-  // The hidden images (graders only: a student release has no hidden/ folder) beside it, as
-  // GoldenTask<N>Hidden.<name>.
+  registerImages(read.manifest, suffix);
+  return true;
+}
+
+}  // namespace
+
+// Registers one test per manifest image (false: the manifest could not be read, and one
+// failing test, Manifest.Reads, says why), then the hidden images (graders only: a student
+// release has no hidden/ folder) beside it, as GoldenTask<N>Hidden.<name>.
+bool registerGoldenChecks(const std::string& failuresDir) {
+  config().failures = std::filesystem::absolute(failuresDir).lexically_normal().string();
+  if (!registerManifest(config().manifest, "", "Reads")) return false;
   const std::filesystem::path hidden =
       std::filesystem::path(config().manifest).parent_path() / "hidden" / "manifest.json";
-  if (std::filesystem::exists(hidden)) {
-    golden::ManifestResult readHidden = golden::readManifest(hidden.string());
-    if (!readHidden) {
-      const std::string error = readHidden.error;
-      ::testing::RegisterTest("Manifest", "ReadsHidden", nullptr, nullptr, __FILE__, __LINE__,
-                              [error]() -> ::testing::Test* { return new ManifestError(error); });
-      return false;
-    }
-    registerImages(readHidden.manifest, "Hidden");
-  }
-  return true;
+  return !std::filesystem::exists(hidden) ||
+         registerManifest(hidden.string(), "Hidden", "ReadsHidden");
 }
 
 namespace {
