@@ -61,6 +61,17 @@ class Draw {
 
 double relTol(const Vec2& expected) { return 1e-9 * (1 + expected.norm()); }
 
+// The reference spring force on p2 of a spring (l0, ks, kd) from p1 to p2.
+Vec2 referenceForce(Particle& p1, Particle& p2, double restLength, double ks, double kd) {
+  Spring s;
+  s.p1 = &p1;
+  s.p2 = &p2;
+  s.restLength = restLength;
+  s.ks = ks;
+  s.kd = kd;
+  return referenceSpringForce(s);
+}
+
 // Task 1 -------------------------------------------------------------------------------------
 
 TEST(Task1Hidden, RandomSpringsMatchTheSlideFormula) {
@@ -77,13 +88,7 @@ TEST(Task1Hidden, RandomSpringsMatchTheSlideFormula) {
     r.ks = draw.uniform(1, 500);
     r.kd = draw.coin() ? draw.uniform(0, 5) : 0;
     Particle p1 = r.p1, p2 = r.p2;
-    Spring s;
-    s.p1 = &p1;
-    s.p2 = &p2;
-    s.restLength = r.restLength;
-    s.ks = r.ks;
-    s.kd = r.kd;
-    const Vec2 expected = referenceSpringForce(s);
+    const Vec2 expected = referenceForce(p1, p2, r.restLength, r.ks, r.kd);
     const harness::SpringForceResult result = student().springForce(r);
     A6_ASSERT_RAN(result);
     ASSERT_VEC_NEAR(result.force, expected, relTol(expected))
@@ -160,15 +165,11 @@ void referenceStep(std::vector<Particle>& ps, const std::vector<harness::SpringD
                    const Environment& env, double h) {
   for (Particle& p : ps) p.f = referenceExternalForce(p, env);
   for (const harness::SpringData& sd : springs) {
-    Spring s;
-    s.p1 = &ps[static_cast<std::size_t>(sd.i)];
-    s.p2 = &ps[static_cast<std::size_t>(sd.j)];
-    s.restLength = sd.restLength;
-    s.ks = sd.ks;
-    s.kd = sd.kd;
-    const Vec2 f = referenceSpringForce(s);
-    s.p2->f += f;
-    s.p1->f -= f;
+    Particle& p1 = ps[static_cast<std::size_t>(sd.i)];
+    Particle& p2 = ps[static_cast<std::size_t>(sd.j)];
+    const Vec2 f = referenceForce(p1, p2, sd.restLength, sd.ks, sd.kd);
+    p2.f += f;
+    p1.f -= f;
   }
   for (Particle& p : ps) {
     if (p.pinned) continue;
