@@ -34,17 +34,15 @@
 // submission or its results. The student folders are all created before the first grading, so
 // that each a6_grade finds them to hide.
 //
-// Other students' processes: as root, the sandbox runs the compiler and the probe as an
-// unprivileged user with a process limit (RLIMIT_NPROC), and that limit counts every process of
-// the user, system-wide. Gradings that share a user share the headroom: a fork bomb in one, or
-// many compiles starting at once, would make another's compiler fail to start, and that
-// submission would lose a task for "did not compile". So each job slot gets its own user
-// (a6_grade --sandbox-uid): the uids below nobody's (65533, 65532, ...) that have no account, no
-// process and no other a6_batch holding them (a lock file each), checked to work; failing that,
-// all share nobody, and the summary says so.
+// Other students' processes: as root, every a6_grade claims a sandbox user of its own for its
+// whole grading (grader/process.h), so gradings that run at once never share a process limit,
+// and a process one submission left behind cannot touch the next one's.
+//
+// Reaping: every wait names its pid (an a6_grade of ours, or a stray being ended), never
+// waitpid(-1), which could reap an a6_grade before the loop that waits for it: that batch would
+// wait forever. An a6_grade that vanishes (reaped by anyone else) is a grader error for its
+// submission, and the batch goes on.
 #include <fcntl.h>
-#include <grp.h>
-#include <pwd.h>
 #include <sys/file.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -56,18 +54,19 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <map>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "batch.h"
+#include "process.h"
 #include "report.h"  // writeFileAtomically
 
 #ifndef A6_DEFAULT_RUBRIC
@@ -119,6 +118,14 @@ std::string points(const Outcome& o) {
   out << (*o.total - ec) << "/" << o.max.value_or(0);
   if (ec > 0) out << " +" << ec;
   return out.str();
+}
+
+// Seconds between two sweeps for strays: 1, or A6_BATCH_SWEEP_SECONDS (the tests set it tiny, to
+// provoke a sweep between a child's exit and its reaping).
+double sweepInterval() {
+  const char* text = std::getenv("A6_BATCH_SWEEP_SECONDS");
+  const double seconds = text != nullptr ? std::atof(text) : 1.0;
+  return seconds >= 0 ? seconds : 1.0;
 }
 
 bool hasGrade(const Outcome& o) { return o.status == kGraded || o.status == kBuildFailed; }
@@ -203,79 +210,9 @@ class Progress {
   Clock::time_point lastDraw_{};
 };
 
-// The sandbox users of the job slots (see "Other students' processes"): `jobs` uids below
-// nobody's without an account, a running process or another a6_batch's claim, each checked by
-// running /bin/true as it.
-// Empty when not root (the sandbox then changes no user) or when they do not work (`note` says
-// why).
-std::vector<uid_t> sandboxUids(int jobs, std::string& note) {
-  if (geteuid() != 0 || jobs < 2) return {};
-  std::set<long> busy;  // real uids of running processes
-  std::error_code ec;
-  for (fs::directory_iterator it("/proc", ec), end; !ec && it != end; it.increment(ec)) {
-    std::istringstream status(readAll(it->path() / "status"));
-    for (std::string line; std::getline(status, line);) {
-      if (line.rfind("Uid:", 0) == 0) {
-        busy.insert(std::strtol(line.c_str() + 4, nullptr, 10));
-        break;
-      }
-    }
-  }
-  auto works = [](uid_t uid) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-      const gid_t nogroup = 65534;
-      if (setgroups(0, nullptr) != 0 || setgid(nogroup) != 0 || setuid(uid) != 0) _exit(126);
-      const int devnull = ::open("/dev/null", O_WRONLY);
-      if (devnull >= 0) {
-        dup2(devnull, STDOUT_FILENO);
-        dup2(devnull, STDERR_FILENO);
-      }
-      execl("/bin/true", "true", static_cast<char*>(nullptr));
-      _exit(127);
-    }
-    int status = 0;
-    return pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) &&
-           WEXITSTATUS(status) == 0;
-  };
-  // Another a6_batch on this machine holds its uids by a lock file each, for its whole run.
-  std::error_code tmpError;
-  const fs::path lockDir =
-      access("/run/lock", W_OK) == 0 ? fs::path("/run/lock") : fs::temp_directory_path(tmpError);
-  auto claim = [&](uid_t uid) {
-    const fs::path file = lockDir / ("a6_batch.uid" + std::to_string(uid) + ".lock");
-    const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0) return false;
-    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
-      ::close(fd);
-      return false;
-    }
-    return true;  // held until this process ends
-  };
-  std::vector<uid_t> uids;
-  for (uid_t uid = 65533; uid > 60000 && static_cast<int>(uids.size()) < jobs; --uid) {
-    if (getpwuid(uid) != nullptr || busy.count(static_cast<long>(uid)) || !claim(uid)) continue;
-    if (!works(uid)) {
-      note = "the sandbox could not run as uid " + std::to_string(uid) +
-             ", so all gradings ran as nobody and shared its process limit (a fork bomb in one "
-             "could make another's compiler fail)";
-      return {};
-    }
-    uids.push_back(uid);
-  }
-  if (static_cast<int>(uids.size()) < jobs) {
-    note =
-        "not enough free uids below 65534 for one sandbox user per job: all gradings ran as "
-        "nobody";
-    return {};
-  }
-  return uids;
-}
-
 // One a6_grade at work.
 struct Running {
   std::size_t index;  // into the submissions
-  int slot;           // its job slot: which sandbox user it has
   pid_t pid;
   Clock::time_point start;
   Clock::time_point deadline;
@@ -285,11 +222,9 @@ struct Running {
 class Batch {
  public:
   Batch(const Options& options, Inventory inventory, fs::path out, fs::path grader,
-        std::string fingerprintOptions, int jobs, std::vector<uid_t> sandboxUids)
+        std::string fingerprintOptions, int jobs)
       : o_(options),
         jobs_(jobs),
-        sandboxUids_(std::move(sandboxUids)),
-        slotBusy_(static_cast<std::size_t>(jobs), false),
         inv_(std::move(inventory)),
         out_(std::move(out)),
         grader_(std::move(grader)),
@@ -337,16 +272,17 @@ class Batch {
           writeGradebook();
         }
       }
-      // Reap: our a6_grade children, and strays re-parented to us.
-      int status = 0;
-      for (pid_t pid; (pid = waitpid(-1, &status, WNOHANG)) > 0;) {
-        const auto r = std::find_if(running_.begin(), running_.end(),
-                                    [pid](const Running& x) { return x.pid == pid; });
-        if (r == running_.end()) continue;
-        const Running done = *r;
-        running_.erase(r);
-        slotBusy_[static_cast<std::size_t>(done.slot)] = false;
-        finish(done, status);
+      // Reap our a6_grade children, each by its pid.
+      for (std::size_t k = 0; k < running_.size();) {
+        bool vanished = false;
+        const std::optional<int> status = process::waitFor(running_[k].pid, 0, &vanished);
+        if (!status && !vanished) {
+          ++k;
+          continue;
+        }
+        const Running done = running_[k];
+        running_.erase(running_.begin() + static_cast<std::ptrdiff_t>(k));
+        finish(done, status, vanished);
         progress.finished(inv_.submissions[done.index], *outcomes_[done.index]);
         writeGradebook();
       }
@@ -358,7 +294,7 @@ class Batch {
           kill(r.pid, SIGKILL);
         }
       }
-      if (secondsSince(lastSweep) > 1) {
+      if (secondsSince(lastSweep) > sweepSeconds_) {
         killStrays();
         lastSweep = Clock::now();
       }
@@ -401,11 +337,6 @@ class Batch {
       args.insert(args.end(), {"--time-budget", budget.str()});
     }
     args.insert(args.end(), {"--hide", fs::absolute(o_.input).string(), "--hide", out_.string()});
-    const int slot =
-        static_cast<int>(std::find(slotBusy_.begin(), slotBusy_.end(), false) - slotBusy_.begin());
-    if (static_cast<std::size_t>(slot) < sandboxUids_.size()) {
-      args.insert(args.end(), {"--sandbox-uid", std::to_string(sandboxUids_[slot])});
-    }
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -463,20 +394,24 @@ class Batch {
       return false;
     }
     setpgid(pid, pid);  // here too: a time limit may kill the group before the child set it
-    slotBusy_[static_cast<std::size_t>(slot)] = true;
     const auto now = Clock::now();
-    running_.push_back({i, slot, pid, now,
+    running_.push_back({i, pid, now,
                         now + std::chrono::duration_cast<Clock::duration>(
                                   std::chrono::duration<double>(o_.timeout))});
     return true;
   }
 
-  // a6_grade ended (status from waitpid): its outcome, the marker, its work folder.
-  void finish(const Running& r, int status) {
+  // a6_grade ended (status from waitpid; none when it vanished): its outcome, the marker, its
+  // work folder.
+  void finish(const Running& r, std::optional<int> waited, bool vanished) {
+    const int status = waited.value_or(0);
     const Submission& s = inv_.submissions[r.index];
     const fs::path dir = out_ / s.key;
     Outcome o;
-    if (r.timedOut) {
+    if (vanished) {
+      o.status = kGraderError;
+      o.reason = "a6_grade vanished: something else reaped it (see " + std::string(kLog) + ")";
+    } else if (r.timedOut) {
       o.status = kTimedOut;
       o.reason = "stopped after " + oneDecimal(o_.timeout) + " s (--timeout)";
     } else if (WIFSIGNALED(status)) {
@@ -531,28 +466,9 @@ class Batch {
 
   // Children of ours that are no running a6_grade: what a dead a6_grade's probe left behind.
   void killStrays() {
-    const pid_t self = getpid();
-    std::error_code ec;
-    for (fs::directory_iterator it("/proc", ec), end; !ec && it != end; it.increment(ec)) {
-      const std::string name = it->path().filename().string();
-      if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
-      const std::string stat = readAll(it->path() / "stat");
-      const std::size_t close = stat.rfind(')');  // "pid (comm) state ppid ..."
-      if (close == std::string::npos) continue;
-      std::istringstream rest(stat.substr(close + 1));
-      char state = 0;
-      long ppid = 0;
-      rest >> state >> ppid;
-      const pid_t pid = static_cast<pid_t>(std::stol(name));
-      if (ppid != self) continue;
-      if (std::any_of(running_.begin(), running_.end(),
-                      [pid](const Running& r) { return r.pid == pid; }))
-        continue;
-      kill(-pid, SIGKILL);  // its group, if it leads one
-      kill(pid, SIGKILL);
-    }
-    while (waitpid(-1, nullptr, WNOHANG) > 0) {
-    }
+    std::vector<pid_t> keep;
+    for (const Running& r : running_) keep.push_back(r.pid);
+    process::endStrayChildren(keep);
   }
 
   int interrupted(int signo) {
@@ -560,7 +476,7 @@ class Batch {
       kill(-r.pid, SIGKILL);
       kill(r.pid, SIGKILL);
     }
-    for (const Running& r : running_) waitpid(r.pid, nullptr, 0);
+    for (const Running& r : running_) process::waitFor(r.pid, 30);
     const std::size_t stopped = running_.size();
     running_.clear();
     killStrays();
@@ -646,8 +562,8 @@ class Batch {
 
   const Options& o_;
   int jobs_;
-  std::vector<uid_t> sandboxUids_;  // per job slot; empty: a6_grade's default (nobody)
-  std::vector<bool> slotBusy_;
+  // Seconds between sweeps for strays (A6_BATCH_SWEEP_SECONDS: the tests provoke races with it).
+  double sweepSeconds_ = sweepInterval();
   Inventory inv_;
   fs::path out_;
   fs::path grader_;
@@ -769,9 +685,6 @@ int main(int argc, char** argv) {
   const int jobs = options.jobs > 0
                        ? options.jobs
                        : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  std::string uidNote;
-  std::vector<uid_t> uids = sandboxUids(jobs, uidNote);
-  if (!uidNote.empty()) inventory.notes.push_back(uidNote);
-  Batch batch(options, std::move(inventory), out, grader, decides.str(), jobs, std::move(uids));
+  Batch batch(options, std::move(inventory), out, grader, decides.str(), jobs);
   return batch.run();
 }

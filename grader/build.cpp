@@ -18,12 +18,15 @@
 // probe links; the starter alone always links.
 #include "build.h"
 
+#include <elf.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstring>
 #include <fstream>
+#include <functional>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -84,6 +87,77 @@ std::vector<std::string> undefinedSymbols(const std::string& linkerOutput) {
 
 std::string stem(const std::string& file) { return fs::path(file).stem().string(); }
 
+// What the compiler (`link` false) or the linker sees (an allow-list): the system's programs,
+// headers and libraries, the kit, the work folder and the student's files, and for the linker
+// the probe's link inputs too (never the compiler: `.incbin` would copy the reference models'
+// object into the student's); of /dev, only null, zero and urandom (a source that includes
+// /dev/ptmx or a tty would block the compiler). The kit's secrets are named first where nothing
+// can be hidden (not root).
+SandboxView viewOfTools(const Kit& kit, const fs::path& workDir,
+                        const std::vector<fs::path>& sources, bool link) {
+  std::vector<fs::path> keep = {absoluteClean(kit.dir), workDir};
+  keep.insert(keep.end(), sources.begin(), sources.end());
+  for (const auto* inputs : {&kit.probeMain, &kit.modelsMain, &kit.linkInputs}) {
+    for (const std::string& input : *inputs) {
+      if (link && !input.empty() && input[0] == '/') keep.push_back(absoluteClean(input));
+    }
+  }
+  return allowOnly(keep, kit.secrets);
+}
+
+// Runs the compiler or the linker in the sandbox, in `dir`.
+Exit runTool(const Kit& kit, const SandboxView& view, const fs::path& dir,
+             std::vector<std::string> argv, const Limits& limits) {
+  SandboxSpec s;
+  s.argv = std::move(argv);
+  s.workDir = dir;
+  s.removeWorkDir = false;  // it holds the object file, the probe
+  s.limits = limits;
+  s.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "TMPDIR=" + dir.string()};
+  s.hide = view.hide;
+  s.reveal = view.reveal;
+  s.uid = kit.uid;
+  s.gid = kit.gid;
+  return runSandboxed(s);
+}
+
+// Code in an object that would run before the probe's seccomp filter is on: an entry of
+// .preinit_array, or an ifunc resolver (run by the dynamic loader while it relocates). What the
+// object holds of them, or "" (also for what is not a 64-bit ELF object: the linker judges it).
+std::string runsBeforeFilter(const fs::path& object) {
+  std::ifstream in(object, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  Elf64_Ehdr eh;
+  if (bytes.size() < sizeof eh || bytes.compare(0, 4, ELFMAG) != 0 ||
+      bytes[EI_CLASS] != ELFCLASS64) {
+    return "";
+  }
+  std::memcpy(&eh, bytes.data(), sizeof eh);
+  auto section = [&](std::size_t i, Elf64_Shdr& sh) {
+    const std::size_t at = eh.e_shoff + i * sizeof sh;
+    if (eh.e_shentsize != sizeof sh || at + sizeof sh > bytes.size()) return false;
+    std::memcpy(&sh, bytes.data() + at, sizeof sh);
+    return true;
+  };
+  Elf64_Shdr names{};
+  if (!section(eh.e_shstrndx, names)) return "";
+  for (std::size_t i = 0; i < eh.e_shnum; ++i) {
+    Elf64_Shdr sh;
+    if (!section(i, sh)) break;
+    const std::size_t at = names.sh_offset + sh.sh_name;
+    const std::string name = at < bytes.size() ? std::string(bytes.c_str() + at) : "";
+    if (name.rfind(".preinit_array", 0) == 0) return "a .preinit_array section";
+    if (sh.sh_type != SHT_SYMTAB || sh.sh_entsize != sizeof(Elf64_Sym)) continue;
+    for (std::size_t k = 0; k < sh.sh_size / sizeof(Elf64_Sym); ++k) {
+      Elf64_Sym sym;
+      const std::size_t off = sh.sh_offset + k * sizeof sym;
+      if (off + sizeof sym > bytes.size()) break;
+      std::memcpy(&sym, bytes.data() + off, sizeof sym);
+      if (ELF64_ST_TYPE(sym.st_info) == STT_GNU_IFUNC) return "an ifunc symbol";
+    }
+  }
+  return "";
+}
 }  // namespace
 
 fs::path defaultKitPath() {
@@ -118,6 +192,7 @@ Kit loadKit(const fs::path& kitJson) {
     kit.compiler = j.at("compiler").get<std::string>();
     kit.compileFlags = j.at("compileFlags").get<std::vector<std::string>>();
     kit.probeMain = j.at("probeMain").get<std::vector<std::string>>();
+    kit.modelsMain = j.value("modelsMain", std::vector<std::string>{});
     kit.linkInputs = j.at("linkInputs").get<std::vector<std::string>>();
     kit.starterObjects = j.at("starterObjects").get<std::string>();
     kit.dir = j.at("dir").get<std::string>();
@@ -133,9 +208,10 @@ Kit loadKit(const fs::path& kitJson) {
     kit.error = "the kit's compiler " + kit.compiler + " is not an executable" + rebuild;
     return kit;
   }
-  if (kit.probeMain.empty()) {
+  if (kit.probeMain.empty() || kit.modelsMain.empty()) {
     kit.error = "the grader kit " + kitJson.string() +
-                " names no probe main (the probe targets a6_probe_main and a6_probe_kit were not "
+                " names no probe main (the probe targets a6_probe_main, a6_probe_main_models and "
+                "a6_probe_kit were not "
                 "part of the build)" +
                 rebuild;
     return kit;
@@ -145,6 +221,7 @@ Kit loadKit(const fs::path& kitJson) {
     needed.push_back(kit.starterObjects / (stem(file) + ".o"));
   }
   for (const std::string& input : kit.probeMain) needed.emplace_back(input);
+  for (const std::string& input : kit.modelsMain) needed.emplace_back(input);
   for (const std::string& input : kit.linkInputs) {
     if (!input.empty() && input[0] == '/') needed.emplace_back(input);
   }
@@ -158,142 +235,45 @@ Kit loadKit(const fs::path& kitJson) {
 }
 
 namespace {
-Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& workDirIn,
-                          const Limits& compileLimits, int jobs) {
-  Build build;
-  const auto start = Clock::now();
-  if (!kit.ok()) {
-    build.error = "no grader kit: " + kit.error;
-    return build;
-  }
+using ToolRunner = std::function<Exit(const fs::path& dir, std::vector<std::string> argv)>;
+
+// As grader/cmake/probe.cmake links: main, the six objects in task order, the libraries; the
+// result stripped (no symbol table to search for what the framework holds).
+std::vector<std::string> linkCommand(const Kit& kit, const std::vector<std::string>& main,
+                                     const std::vector<fs::path>& objects, const std::string& out) {
+  std::vector<std::string> argv = {kit.compiler, "-s", "-o", out};
+  argv.insert(argv.end(), main.begin(), main.end());
+  for (const fs::path& o : objects) argv.push_back(o.string());
+  argv.insert(argv.end(), kit.linkInputs.begin(), kit.linkInputs.end());
+  return argv;
+}
+
+// Links workDir/a6_probe from `objects` (one per task, in task order): a student object that keeps
+// it from linking is replaced by the starter's (its task becomes a LinkError), until it links.
+void linkProbe(const Kit& kit, Build& build, std::vector<fs::path>& objects,
+               const fs::path& workDir, const ToolRunner& run) {
   std::error_code ec;
-  const fs::path workDir = absoluteClean(workDirIn);
-  fs::create_directories(workDir / "obj", ec);
-  if (ec) {
-    build.error = "cannot create the work folder " + workDir.string() + ": " + ec.message();
-    return build;
-  }
-  // The sandbox runs the compiler as another user (nobody): it must reach the work folder.
-  const auto open = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                    fs::perms::others_read | fs::perms::others_exec;
-  fs::permissions(workDir, open, ec);
-  fs::permissions(workDir / "obj", open, ec);
-
-  // Hidden: the kit's secrets, except the kit, the probe's link inputs, the work folder and the
-  // student's files.
-  std::vector<fs::path> keep = {absoluteClean(kit.dir), workDir};
-  for (const auto& [name, path] : intake.files) keep.push_back(absoluteClean(path).parent_path());
-  for (const auto* inputs : {&kit.probeMain, &kit.linkInputs}) {
-    for (const std::string& input : *inputs) {
-      if (!input.empty() && input[0] == '/') keep.push_back(absoluteClean(input));
-    }
-  }
-  std::vector<fs::path> hide;
-  for (const fs::path& secret : kit.secrets) hideExcept(absoluteClean(secret), keep, hide);
-  std::sort(hide.begin(), hide.end());
-  hide.erase(std::unique(hide.begin(), hide.end()), hide.end());
-
-  std::mutex notesMutex;
-  auto run = [&](const fs::path& dir, std::vector<std::string> argv) {
-    SandboxSpec s;
-    s.argv = std::move(argv);
-    s.workDir = dir;
-    s.removeWorkDir = false;  // it holds the object file, the probe
-    s.limits = compileLimits;
-    s.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "TMPDIR=" + dir.string()};
-    s.hide = hide;
-    s.uid = kit.uid;
-    s.gid = kit.gid;
-    Exit e = runSandboxed(s);
-    std::lock_guard<std::mutex> lock(notesMutex);
-    for (const std::string& n : e.notes) {
-      if (std::find(build.notes.begin(), build.notes.end(), n) == build.notes.end()) {
-        build.notes.push_back(n);
-      }
-    }
-    return e;
-  };
-  const std::string kitDir = absoluteClean(kit.dir).string() + "/";
-
-  // 1. Each file alone (`jobs` at a time).
-  build.tasks.resize(kTaskFiles.size());
-  std::vector<fs::path> objects(kTaskFiles.size());  // the object linked for each task
-  auto compile = [&](std::size_t i) {
-    const std::string& file = kTaskFiles[i];
-    TaskBuild& task = build.tasks[i];
-    task.file = file;
-    const fs::path starter = kit.starterObjects / (stem(file) + ".o");
-    objects[i] = starter;
-    std::error_code fec;
-    auto found = intake.files.find(file);
-    if (found == intake.files.end() || !fs::is_regular_file(found->second, fec)) {
-      task.status = TaskBuild::Status::Missing;
-      task.messages = file + " is not in the submission: task " + std::to_string(i + 1) +
-                      " is graded with the starter's stub.\n";
-      return;
-    }
-    const fs::path source = absoluteClean(found->second);
-    const fs::path dir = workDir / "obj" / stem(file);
-    std::vector<std::string> argv = {kit.compiler};
-    argv.insert(argv.end(), kit.compileFlags.begin(), kit.compileFlags.end());
-    argv.insert(argv.end(), {"-c", source.string(), "-o", stem(file) + ".o"});
-    const auto t0 = Clock::now();
-    const Exit e = run(dir, argv);
-    task.seconds = secondsSince(t0);
-    // Messages name the file as the student knows it, and the headers as a6/... .
-    std::string said = replaceAll(e.output, source.parent_path().string() + "/", "");
-    said = replaceAll(said, kitDir + "include/", "");
-    task.messages = cap(said, 32u << 10);
-    if (e.outputTruncated) task.messages += "[... the compiler's output was cut]\n";
-    const fs::path object = dir / (stem(file) + ".o");
-    if (e.kind == Exit::Kind::TimedOut) {
-      task.status = TaskBuild::Status::TimedOut;
-      task.messages += "The compiler did not finish " + file + " within " +
-                       std::to_string(static_cast<int>(compileLimits.wallSeconds)) + " s: task " +
-                       std::to_string(i + 1) + " is graded with the starter's stub.\n";
-    } else if (e.ok() && fs::is_regular_file(object, fec)) {
-      task.status = TaskBuild::Status::Compiled;
-      objects[i] = object;
-    } else {
-      task.status = TaskBuild::Status::CompileError;
-      if (said.find("virtual memory exhausted") != std::string::npos ||
-          said.find("out of memory") != std::string::npos) {
-        task.messages += "The compiler ran out of its " +
-                         std::to_string(compileLimits.memoryBytes >> 20) + " MiB of memory.\n";
-      }
-      task.messages += file + " did not compile (the compiler " + e.describe() + "): task " +
-                       std::to_string(i + 1) + " is graded with the starter's stub.\n";
-    }
-  };
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i; (i = next++) < kTaskFiles.size();) compile(i);
-  };
-  std::vector<std::thread> workers;
-  try {
-    for (int k = 1; k < std::max(1, jobs); ++k) workers.emplace_back(worker);
-  } catch (const std::system_error&) {
-    // No more threads: the ones started and this one do the rest.
-  }
-  worker();
-  for (std::thread& t : workers) t.join();
-
-  // 2. The link; a student object that keeps it from linking is replaced by the starter's.
   const fs::path linkDir = workDir / "link";
+  const std::string kitDir = absoluteClean(kit.dir).string() + "/";
   const auto linkStart = Clock::now();
   for (;;) {
-    // As grader/cmake/probe.cmake links: main, the six objects in task order, the libraries.
-    std::vector<std::string> argv = {kit.compiler, "-o", "a6_probe"};
-    argv.insert(argv.end(), kit.probeMain.begin(), kit.probeMain.end());
-    for (const fs::path& o : objects) argv.push_back(o.string());
-    argv.insert(argv.end(), kit.linkInputs.begin(), kit.linkInputs.end());
-    const Exit e = run(linkDir, argv);
+    const Exit e = run(linkDir, linkCommand(kit, kit.probeMain, objects, "a6_probe"));
     if (e.ok() && fs::is_regular_file(linkDir / "a6_probe", ec)) {
       build.probe = workDir / "a6_probe";
       fs::rename(linkDir / "a6_probe", build.probe, ec);
       if (ec) {
         build.error =
             "cannot move the linked probe to " + build.probe.string() + ": " + ec.message();
+        break;
+      }
+      // The second probe: the objects that linked, with the reference models' main.
+      const Exit m = run(linkDir, linkCommand(kit, kit.modelsMain, objects, "a6_probe_models"));
+      build.modelsProbe = workDir / "a6_probe_models";
+      fs::rename(linkDir / "a6_probe_models", build.modelsProbe, ec);
+      if (!m.ok() || ec) {
+        build.error = "the probe linked, but not with the reference models' main (the linker " +
+                      m.describe() + "): the grader kit is broken, rebuild it. The linker said:\n" +
+                      cap(m.output, 8u << 10);
       }
       break;
     }
@@ -335,7 +315,7 @@ Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& 
     // One at a time: the first one blamed (as a last resort, every student object).
     std::string said = replaceAll(e.output, workDir.string() + "/obj/", "");
     said = replaceAll(said, kitDir, "kit/");
-    for (const auto* inputs : {&kit.probeMain, &kit.linkInputs}) {
+    for (const auto* inputs : {&kit.probeMain, &kit.modelsMain, &kit.linkInputs}) {
       for (const std::string& input : *inputs) {
         if (!input.empty() && input[0] == '/') {
           said = replaceAll(said, input, fs::path(input).filename().string());
@@ -361,20 +341,187 @@ Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& 
     }
   }
   build.linkSeconds = secondsSince(linkStart);
+}
+
+Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& workDirIn,
+                          const Limits& compileLimits, int jobs, double budgetSeconds) {
+  Build build;
+  const auto start = Clock::now();
+  if (!kit.ok()) {
+    build.error = "no grader kit: " + kit.error;
+    return build;
+  }
+  std::error_code ec;
+  const fs::path workDir = absoluteClean(workDirIn);
+  fs::create_directories(workDir / "obj", ec);
+  if (ec) {
+    build.error = "cannot create the work folder " + workDir.string() + ": " + ec.message();
+    return build;
+  }
+  // The sandbox runs the compiler as another user (nobody): it must reach the work folder.
+  const auto open = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                    fs::perms::others_read | fs::perms::others_exec;
+  fs::permissions(workDir, open, ec);
+  fs::permissions(workDir / "obj", open, ec);
+
+  std::vector<fs::path> sources;
+  for (const auto& [name, path] : intake.files)
+    sources.push_back(absoluteClean(path).parent_path());
+  const SandboxView compileView = viewOfTools(kit, workDir, sources, false);
+  const SandboxView linkView = viewOfTools(kit, workDir, sources, true);
+  std::mutex notesMutex;
+  const auto wholeEnd = start + std::chrono::duration_cast<Clock::duration>(
+                                    std::chrono::duration<double>(budgetSeconds));
+  auto run = [&](const fs::path& dir, std::vector<std::string> argv) {
+    // Every compile within what is left of the build's budget (a link gets at least 10 s).
+    Limits limits = compileLimits;
+    const double left = std::chrono::duration<double>(wholeEnd - Clock::now()).count();
+    limits.wallSeconds =
+        std::max(dir.filename() == "link" ? 10.0 : 1.0, std::min(limits.wallSeconds, left));
+    const bool link = dir.filename() == "link";
+    Exit e = runTool(kit, link ? linkView : compileView, dir, std::move(argv), limits);
+    std::lock_guard<std::mutex> lock(notesMutex);
+    for (const std::string& n : e.notes) {
+      if (std::find(build.notes.begin(), build.notes.end(), n) == build.notes.end()) {
+        build.notes.push_back(n);
+      }
+    }
+    return e;
+  };
+  const std::string kitDir = absoluteClean(kit.dir).string() + "/";
+
+  // 1. Each file alone (`jobs` at a time).
+  build.tasks.resize(kTaskFiles.size());
+  std::vector<fs::path> objects(kTaskFiles.size());  // the object linked for each task
+  auto compile = [&](std::size_t i) {
+    const std::string& file = kTaskFiles[i];
+    TaskBuild& task = build.tasks[i];
+    task.file = file;
+    const fs::path starter = kit.starterObjects / (stem(file) + ".o");
+    objects[i] = starter;
+    std::error_code fec;
+    auto found = intake.files.find(file);
+    if (found == intake.files.end() || !fs::is_regular_file(found->second, fec)) {
+      task.status = TaskBuild::Status::Missing;
+      task.messages = file + " is not in the submission: task " + std::to_string(i + 1) +
+                      " is graded with the starter's stub.\n";
+      return;
+    }
+    const fs::path source = absoluteClean(found->second);
+    const fs::path dir = workDir / "obj" / stem(file);
+    if (Clock::now() >= wholeEnd) {
+      task.status = TaskBuild::Status::TimedOut;
+      task.messages = "The build's time budget (" +
+                      std::to_string(static_cast<int>(budgetSeconds)) +
+                      " s for all files) was used up before " + file + " was compiled: task " +
+                      std::to_string(i + 1) + " is graded with the starter's stub.\n";
+      return;
+    }
+    std::vector<std::string> argv = {kit.compiler};
+    argv.insert(argv.end(), kit.compileFlags.begin(), kit.compileFlags.end());
+    argv.insert(argv.end(), {"-c", source.string(), "-o", stem(file) + ".o"});
+    const auto t0 = Clock::now();
+    const Exit e = run(dir, argv);
+    task.seconds = secondsSince(t0);
+    // Messages name the file as the student knows it, and the headers as a6/... .
+    std::string said = replaceAll(e.output, source.parent_path().string() + "/", "");
+    said = replaceAll(said, kitDir + "include/", "");
+    task.messages = cap(said, 32u << 10);
+    if (e.outputTruncated) task.messages += "[... the compiler's output was cut]\n";
+    const fs::path object = dir / (stem(file) + ".o");
+    if (e.kind == Exit::Kind::TimedOut) {
+      task.status = TaskBuild::Status::TimedOut;
+      task.messages += "The compiler did not finish " + file + " within " +
+                       std::to_string(static_cast<int>(e.wallSeconds + 0.5)) + " s (" +
+                       std::to_string(static_cast<int>(compileLimits.wallSeconds)) + " s a file, " +
+                       std::to_string(static_cast<int>(budgetSeconds)) +
+                       " s for the whole build): task " + std::to_string(i + 1) +
+                       " is graded with the starter's stub.\n";
+    } else if (e.ok() && fs::is_regular_file(object, fec)) {
+      if (const std::string early = runsBeforeFilter(object); !early.empty()) {
+        task.status = TaskBuild::Status::LinkError;
+        task.messages += file + " compiled, but its object holds " + early +
+                         ": code that would run before the grader's protections are on. Task " +
+                         std::to_string(i + 1) + " is graded with the starter's stub.\n";
+        return;
+      }
+      task.status = TaskBuild::Status::Compiled;
+      task.object = object;
+      objects[i] = object;
+    } else {
+      task.status = TaskBuild::Status::CompileError;
+      if (said.find("virtual memory exhausted") != std::string::npos ||
+          said.find("out of memory") != std::string::npos) {
+        task.messages += "The compiler ran out of its " +
+                         std::to_string(compileLimits.memoryBytes >> 20) + " MiB of memory.\n";
+      }
+      task.messages += file + " did not compile (the compiler " + e.describe() + "): task " +
+                       std::to_string(i + 1) + " is graded with the starter's stub.\n";
+    }
+  };
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i; (i = next++) < kTaskFiles.size();) compile(i);
+  };
+  std::vector<std::thread> workers;
+  try {
+    for (int k = 1; k < std::max(1, jobs); ++k) workers.emplace_back(worker);
+  } catch (const std::system_error&) {
+    // No more threads: the ones started and this one do the rest.
+  }
+  worker();
+  for (std::thread& t : workers) t.join();
+
+  // 2. The link; a student object that keeps it from linking is replaced by the starter's.
+  linkProbe(kit, build, objects, workDir, run);
   build.seconds = secondsSince(start);
   return build;
 }
 }  // namespace
 
 Build buildProbe(const Kit& kit, const Intake& intake, const fs::path& workDir,
-                 const Limits& compileLimits, int jobs) {
+                 const Limits& compileLimits, int jobs, double budgetSeconds) {
   try {
-    return buildProbeUnguarded(kit, intake, workDir, compileLimits, jobs);
+    return buildProbeUnguarded(kit, intake, workDir, compileLimits, jobs, budgetSeconds);
   } catch (const std::exception& e) {
     Build build;
     build.error = std::string("building the probe failed: ") + e.what();
     return build;
   }
+}
+
+Build relinkProbe(const Kit& kit, const Build& compiled, const std::set<std::string>& starterFor,
+                  const fs::path& workDirIn) {
+  Build build;
+  const auto start = Clock::now();
+  try {
+    std::error_code ec;
+    const fs::path workDir = absoluteClean(workDirIn);
+    fs::create_directories(workDir / "link", ec);
+    fs::permissions(workDir,
+                    fs::perms::owner_all | fs::perms::others_read | fs::perms::others_exec |
+                        fs::perms::group_read | fs::perms::group_exec,
+                    ec);
+    build.tasks = compiled.tasks;
+    std::vector<fs::path> objects;
+    std::vector<fs::path> keep;
+    for (TaskBuild& task : build.tasks) {
+      const bool own = task.status == TaskBuild::Status::Compiled && !starterFor.count(task.file);
+      if (!own && task.status == TaskBuild::Status::Compiled)
+        task.status = TaskBuild::Status::LinkError;
+      objects.push_back(own ? task.object : kit.starterObjects / (stem(task.file) + ".o"));
+      if (own) keep.push_back(absoluteClean(task.object).parent_path());
+    }
+    const SandboxView view = viewOfTools(kit, workDir, keep, true);
+    linkProbe(kit, build, objects, workDir,
+              [&](const fs::path& dir, std::vector<std::string> argv) {
+                return runTool(kit, view, dir, std::move(argv), defaultCompileLimits());
+              });
+  } catch (const std::exception& e) {
+    build.error = std::string("linking the probe failed: ") + e.what();
+  }
+  build.seconds = secondsSince(start);
+  return build;
 }
 
 }  // namespace a6::grader

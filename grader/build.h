@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -16,14 +17,16 @@ namespace a6::grader {
 /// grader/cmake/intake_build.cmake). What a compile reads besides the system headers sits in
 /// `dir`; the link also reads `probeMain` and `linkInputs`.
 struct Kit {
-  std::string compiler;                    ///< absolute path of the C++ compiler
-  std::vector<std::string> compileFlags;   ///< pinned: -std=c++17 -O2 -ffp-contract=off -I...
-  std::vector<std::string> probeMain;      ///< the probe's main object(s), linked first
-  std::vector<std::string> linkInputs;     ///< after the six task objects: the probe kit
-                                           ///< library, Box2D, libseccomp
-  std::filesystem::path starterObjects;    ///< folder with <task>.o (and <task>.syms: its
-                                           ///< defined symbols, demangled) of the starter
-  std::filesystem::path dir;               ///< the kit folder: staged headers, starter objects
+  std::string compiler;                   ///< absolute path of the C++ compiler
+  std::vector<std::string> compileFlags;  ///< pinned: -std=c++17 -O2 -ffp-contract=off -I...
+  std::vector<std::string> probeMain;     ///< the probe's main object(s), linked first
+  std::vector<std::string> modelsMain;    ///< the same main with the reference force models,
+                                          ///< for the second probe (Build::modelsProbe)
+  std::vector<std::string> linkInputs;    ///< after the six task objects: the probe kit
+                                          ///< library, Box2D, libseccomp
+  std::filesystem::path starterObjects;   ///< folder with <task>.o (and <task>.syms: its
+                                          ///< defined symbols, demangled) of the starter
+  std::filesystem::path dir;              ///< the kit folder: staged headers, starter objects
   /// Hidden from the compiler and the linker, except `dir`, the work folder and the student's
   /// files: the repository (solution, hidden tests, goldens) and the build tree. A caller may
   /// add more (a batch's other submissions) before buildProbe.
@@ -45,16 +48,26 @@ struct TaskBuild {
   std::string file;  ///< e.g. "cloth.cpp"
   /// LinkError: it compiled, but the probe linked only with the starter's object in its place
   /// (it defines main() or a symbol of the framework, or lacks a function the framework calls).
-  enum class Status { Compiled, Missing, CompileError, TimedOut, LinkError } status =
-      Status::Missing;
-  std::string messages;  ///< the compiler's (and linker's) output (capped), for the report
-  double seconds = 0;    ///< compile time, s
+  enum class Status {
+    Compiled,
+    Missing,
+    CompileError,
+    TimedOut,
+    LinkError
+  } status = Status::Missing;
+  std::string messages;          ///< the compiler's (and linker's) output (capped), for the report
+  double seconds = 0;            ///< compile time, s
+  std::filesystem::path object;  ///< Compiled: the object file (relinkProbe links it again)
   bool usesStarter() const { return status != Status::Compiled; }
 };
 
 struct Build {
   std::string error;                  ///< the probe could not be linked at all
-  std::filesystem::path probe;        ///< the linked probe executable (workDir/a6_probe)
+  std::filesystem::path probe;        ///< the linked probe executable (workDir/a6_probe): it
+                                      ///< serves every request and holds no reference model
+  std::filesystem::path modelsProbe;  ///< the same objects with the reference force models
+                                      ///< (workDir/a6_probe_models), for the requests that ask
+                                      ///< for the reference forces
   std::vector<TaskBuild> tasks;       ///< in task order
   double seconds = 0;                 ///< compiling and linking, wall clock
   double linkSeconds = 0;             ///< of which linking (all attempts)
@@ -67,10 +80,23 @@ struct Build {
 /// a few processes (the driver runs cc1plus, as, collect2, ld).
 Limits defaultCompileLimits();
 
-/// Compiles each file of `intake` in `workDir` (sandboxed, the grader's secrets hidden; `jobs`
-/// files at a time) and links the probe, workDir/a6_probe. workDir is created; objects go to
-/// workDir/obj/<task>/, the link happens in workDir/link/.
+/// The whole build of one submission may take this long (s): every compile gets what is left
+/// of it, up to its own limit; a file not compiled when it is used up is graded with the
+/// starter's stub. The link gets at least 10 s more.
+constexpr double kDefaultBuildBudget = 150;
+
+/// Compiles each file of `intake` in `workDir` (sandboxed, the grader's secrets hidden, only
+/// /dev/null, /dev/zero and /dev/urandom among the devices; `jobs` files at a time) and links
+/// the probe, workDir/a6_probe. workDir is created; objects go to workDir/obj/<task>/, the link
+/// happens in workDir/link/. An object holding code that runs before the probe's seccomp filter
+/// (an ifunc resolver, a .preinit_array entry) is replaced by the starter's.
 Build buildProbe(const Kit& kit, const Intake& intake, const std::filesystem::path& workDir,
-                 const Limits& compileLimits = defaultCompileLimits(), int jobs = 2);
+                 const Limits& compileLimits = defaultCompileLimits(), int jobs = 2,
+                 double budgetSeconds = kDefaultBuildBudget);
+
+/// Links a probe again, in workDir, from the objects `compiled` holds, with the starter's object
+/// for the files in `starterFor` (and for every file that did not compile): no compiling.
+Build relinkProbe(const Kit& kit, const Build& compiled, const std::set<std::string>& starterFor,
+                  const std::filesystem::path& workDir);
 
 }  // namespace a6::grader

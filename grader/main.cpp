@@ -16,6 +16,7 @@
 // results.json is still written, with score 0 and the error; 2 for a bad command line.
 #include <gtest/gtest.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -32,10 +33,12 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <thread>
 
 #include "harness/student_code.h"
+#include "process.h"
 #include "report.h"
 #include "rubric.h"
 #include "suite.h"
@@ -202,33 +205,21 @@ class BudgetedStudent final : public harness::StudentCode {
 BudgetedStudent* gStudent = nullptr;
 
 #ifdef A6_GRADE_HAVE_PROBE
-std::vector<fs::path> hiddenFromProbe(const std::vector<fs::path>& secrets, const fs::path& work) {
-  std::vector<fs::path> hide;
-  for (const fs::path& secret : secrets) {
-    hideExcept(fs::absolute(secret).lexically_normal(), {work.lexically_normal()}, hide);
-  }
-  // Folders every user may write to: covered too (read-only and empty in the probe's view; the
-  // sandbox keeps the probe's own folders visible where they lie inside one), so that a probe
-  // leaves nothing behind for the next submission's probe or anyone else.
-  for (const char* shared : {"/tmp", "/var/tmp", "/dev/shm", "/run/lock", "/dev/mqueue"}) {
-    std::error_code ec;
-    const fs::file_status status = fs::symlink_status(shared, ec);
-    if (!ec && fs::is_directory(status)) hide.emplace_back(shared);
-  }
-  std::sort(hide.begin(), hide.end());
-  hide.erase(std::unique(hide.begin(), hide.end()), hide.end());
-  return hide;
-}
+// What the probe sees (an allow-list, grader/sandbox.h): the system's libraries, /proc, the
+// devices null, zero and urandom, and its own program and work folder; nothing else of the
+// machine: not the grader's trees (`secrets`, named first where nothing can be hidden), not the
+// rest of the work folder (the rendered images), not /tmp or any folder others may write to.
+SandboxView viewOfProbe(const std::vector<fs::path>& secrets) { return allowOnly({}, secrets); }
 #endif
 
 #ifdef A6_GRADE_HAVE_PROBE
 // Whether a probe reaches main and serves: "" when it answers, twice, a request that runs no
 // student code (a scene request with an invalid frame, refused before any scene is made);
 // otherwise why not (it crashed, exited or hung before main: a static initializer, typically).
-std::string startupFailure(const fs::path& probe, const fs::path& runDir,
-                           const std::vector<fs::path>& hide, uid_t uid, gid_t gid) {
+std::string startupFailure(const fs::path& probe, const fs::path& runDir, const SandboxView& view,
+                           uid_t uid, gid_t gid) {
   ProbeClient client(probe, runDir, Limits{});
-  client.setHidden(hide);
+  client.setHidden(view.hide, view.reveal);
   client.setUser(uid, gid);
   client.setRequestTimeout(kStartupSeconds);
   client.setMaxStarts(1);
@@ -248,38 +239,6 @@ std::string startupFailure(const fs::path& probe, const fs::path& runDir,
   return "";
 }
 #endif
-
-// With the grader a child subreaper, what a probe forked and left behind (a child that left
-// the probe's process group, say) becomes this process's child when the probe ends: kill and
-// reap every child left, until none is (they may fork meanwhile; the process limit bounds them).
-void killStrays() {
-  const pid_t self = getpid();
-  for (int round = 0; round < 100; ++round) {
-    int found = 0;
-    std::error_code ec;
-    for (fs::directory_iterator it("/proc", ec), end; !ec && it != end; it.increment(ec)) {
-      const std::string name = it->path().filename().string();
-      if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
-      std::ifstream stat(it->path() / "stat");
-      std::string line;
-      std::getline(stat, line);
-      // "pid (comm) state ppid ...": comm may hold spaces and ')', so read from the last ')'.
-      const std::size_t close = line.rfind(')');
-      if (close == std::string::npos) continue;
-      std::istringstream rest(line.substr(close + 1));
-      char state = 0;
-      long ppid = 0;
-      rest >> state >> ppid;
-      if (ppid != self) continue;
-      ++found;
-      kill(static_cast<pid_t>(std::stol(name)), SIGKILL);
-    }
-    while (waitpid(-1, nullptr, WNOHANG) > 0) {
-    }
-    if (found == 0) return;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-}
 
 // Records every test's outcome, from GoogleTest's events, and gives each test its time limit.
 class Collector : public ::testing::EmptyTestEventListener {
@@ -452,10 +411,11 @@ struct Options {
   std::string out;
   std::string rubric;
   std::string kit;
-  std::vector<std::string> hide;  // more secrets: a batch's other submissions and results
-  uid_t sandboxUid = 65534;       // who compiles and runs the probe, as root (nobody)
+  std::vector<std::string> hide;    // more secrets: a batch's other submissions and results
+  std::optional<uid_t> sandboxUid;  // who compiles and runs the probe, as root (default: a
+                                    // free uid claimed for this grading, grader/process.h)
   std::optional<std::uint64_t> seed;
-  int jobs = 0;
+  int jobs = 2;  // files compiled at once
   double timeBudget = kDefaultTimeBudget;
   std::string filter;
   bool listTests = false;
@@ -473,21 +433,25 @@ struct Options {
 // probe can serve at all (every check then fails at once with that reason), or "".
 std::string checkStartup(const Kit& kit, GradeReport& report, const fs::path& work,
                          const std::vector<fs::path>& secrets) {
-  const std::vector<fs::path> hide = hiddenFromProbe(secrets, work);
+  const SandboxView view = viewOfProbe(secrets);
   const std::string failure =
-      startupFailure(report.build.probe, work / "startup", hide, kit.uid, kit.gid);
+      startupFailure(report.build.probe, work / "startup", view, kit.uid, kit.gid);
   if (failure.empty()) return "";
 
-  std::map<std::string, std::string> culprits;  // task file -> why its probe did not start
+  // Each compiled file alone among the starter's objects: relinked, never compiled again.
+  std::set<std::string> compiled;
   for (const TaskBuild& task : report.build.tasks) {
-    if (task.status != TaskBuild::Status::Compiled) continue;
-    Intake alone;
-    alone.files[task.file] = report.intake.files.at(task.file);
-    const fs::path dir = work / "startup" / fs::path(task.file).stem();
-    const Build solo = buildProbe(kit, alone, dir / "build");
+    if (task.status == TaskBuild::Status::Compiled) compiled.insert(task.file);
+  }
+  std::map<std::string, std::string> culprits;  // task file -> why its probe did not start
+  for (const std::string& file : compiled) {
+    std::set<std::string> others = compiled;
+    others.erase(file);
+    const fs::path dir = work / "startup" / fs::path(file).stem();
+    const Build solo = relinkProbe(kit, report.build, others, dir / "build");
     if (!solo.ok()) continue;
-    const std::string why = startupFailure(solo.probe, dir / "run", hide, kit.uid, kit.gid);
-    if (!why.empty()) culprits[task.file] = why;
+    const std::string why = startupFailure(solo.probe, dir / "run", view, kit.uid, kit.gid);
+    if (!why.empty()) culprits[file] = why;
   }
   const std::string whole =
       "the program built from your files did not start: " + failure +
@@ -495,9 +459,10 @@ std::string checkStartup(const Kit& kit, GradeReport& report, const fs::path& wo
       "must not exit, abort, crash or loop.)";
   if (culprits.empty()) return whole;  // only the files together fail: nothing to single out
 
-  Intake rest = report.intake;
-  for (const auto& [file, why] : culprits) rest.files.erase(file);
-  Build rebuilt = buildProbe(kit, rest, work / "build-without-startup-failures");
+  std::set<std::string> starterFor;
+  for (const auto& [file, why] : culprits) starterFor.insert(file);
+  Build rebuilt =
+      relinkProbe(kit, report.build, starterFor, work / "build-without-startup-failures");
   if (!rebuilt.ok()) return whole;
   for (std::size_t i = 0; i < rebuilt.tasks.size() && i < report.build.tasks.size(); ++i) {
     TaskBuild& task = rebuilt.tasks[i];
@@ -514,7 +479,7 @@ std::string checkStartup(const Kit& kit, GradeReport& report, const fs::path& wo
   rebuilt.seconds += report.build.seconds;
   report.build = rebuilt;
   if (const std::string still =
-          startupFailure(report.build.probe, work / "startup", hide, kit.uid, kit.gid);
+          startupFailure(report.build.probe, work / "startup", view, kit.uid, kit.gid);
       !still.empty()) {
     return "the program built from your files did not start, even with the starter's code in "
            "place of the files that kept it from starting: " +
@@ -524,9 +489,10 @@ std::string checkStartup(const Kit& kit, GradeReport& report, const fs::path& wo
 }
 #endif
 
-// As root, the sandbox runs the compiler and the probe as nobody (SandboxSpec's default user):
-// they must be able to enter every folder down to the work folder.
-constexpr uid_t kSandboxUid = 65534;
+// As root, the sandbox runs the compiler and the probe as a user claimed for this grading, in
+// the group nogroup: they must be able to enter every folder down to the work folder. Such a
+// user has no account, so what it may enter is what "others" may.
+constexpr uid_t kNobody = 65534;
 constexpr gid_t kSandboxGid = 65534;
 
 bool enterableBy(const fs::path& dir, uid_t uid, gid_t gid) {
@@ -544,7 +510,7 @@ bool enterableBy(const fs::path& dir, uid_t uid, gid_t gid) {
 fs::path enterableScratch() {
   std::error_code ec;
   fs::path base = fs::temp_directory_path(ec);
-  if (ec || !enterableBy(base, kSandboxUid, kSandboxGid)) base = "/tmp";
+  if (ec || !enterableBy(base, kNobody, kSandboxGid)) base = "/tmp";
   std::string name = (base / "a6_grade.XXXXXX").string();
   if (mkdtemp(name.data()) == nullptr) return {};
   fs::permissions(name,
@@ -584,16 +550,24 @@ int grade(const Options& options, const Rubric& rubric) {
   }
   if (!rubric.ok()) fail("the rubric is invalid:\n" + rubric.error);
 
+  // The sandbox's user, ours alone for this grading (grader/process.h).
+  std::string claimError;
+  process::UidClaim claim = process::claimUid(options.sandboxUid, claimError);
+  const uid_t sandboxUid = claim.held() ? claim.uid() : options.sandboxUid.value_or(kNobody);
+  if (geteuid() == 0 && !claim.held()) {
+    fail("no sandbox user could be claimed for this grading: " + claimError);
+  }
+
   // The compiler and the probe could not read the submission's files under `out` (a home folder
   // of mode 0700, say): then the scratch files go where they can, and are removed afterwards.
-  if (geteuid() == 0 && !enterableBy(out, options.sandboxUid, kSandboxGid)) {
+  if (geteuid() == 0 && !enterableBy(out, sandboxUid, kSandboxGid)) {
     scratch = enterableScratch();
     if (!scratch.empty()) {
       work = scratch;
-      report.notes.push_back(
-          "the output folder " + out.string() + " cannot be entered by the sandbox's user (uid " +
-          std::to_string(options.sandboxUid) + "), so the scratch files went to " + work.string() +
-          " (removed afterwards)");
+      report.notes.push_back("the output folder " + out.string() +
+                             " cannot be entered by the sandbox's user (uid " +
+                             std::to_string(sandboxUid) + "), so the scratch files went to " +
+                             work.string() + " (removed afterwards)");
     }
   }
 
@@ -622,14 +596,17 @@ int grade(const Options& options, const Rubric& rubric) {
   try {
     Kit kit = loadKit(options.kit.empty() ? defaultKitPath() : fs::path(options.kit));
     for (const std::string& path : options.hide) kit.secrets.push_back(fs::absolute(path));
-    kit.uid = options.sandboxUid;
+    kit.uid = sandboxUid;
     kit.gid = kSandboxGid;
-    if (!kit.ok()) {
+    if (geteuid() == 0 && !claim.held()) {
+      unavailable = "the grader could not build your code (a grader problem, not yours)";
+    } else if (!kit.ok()) {
       fail("the grader's kit is unusable: " + kit.error);
       unavailable = "the grader could not build your code (a grader problem, not yours)";
     } else {
       secrets = kit.secrets;
-      report.build = buildProbe(kit, report.intake, work / "build");
+      report.build = buildProbe(kit, report.intake, work / "build", defaultCompileLimits(),
+                                std::max(1, options.jobs));
       // Each task already fell back to the starter where it had to: a probe that still does
       // not link is the kit's fault, not the submission's.
       if (!report.build.ok()) {
@@ -660,13 +637,19 @@ int grade(const Options& options, const Rubric& rubric) {
 #ifdef A6_GRADE_HAVE_PROBE
   if (unavailable.empty()) {
     try {
-      auto client = std::make_unique<ProbeClient>(report.build.probe, work / "run", Limits{});
-      client->setHidden(hiddenFromProbe(secrets, work));
-      client->setUser(options.sandboxUid, kSandboxGid);
-      ProbeClient* raw = client.get();
+      auto client = [&](const fs::path& program, const char* runDir) {
+        auto c = std::make_unique<ProbeClient>(program, work / runDir, Limits{});
+        const SandboxView view = viewOfProbe(secrets);
+        c->setHidden(view.hide, view.reveal);
+        c->setUser(sandboxUid, kSandboxGid);
+        return c;
+      };
+      auto pair = std::make_unique<ProbePair>(client(report.build.probe, "run"),
+                                              client(report.build.modelsProbe, "run-models"));
+      ProbePair* raw = pair.get();
       setTimeout = [raw](double seconds) { raw->setRequestTimeout(seconds); };
-      newCheck = [raw] { raw->setMaxStarts(raw->starts() + kStartsPerCheck); };
-      probe = std::move(client);
+      newCheck = [raw] { raw->allowMoreStarts(kStartsPerCheck); };
+      probe = std::move(pair);
     } catch (const std::exception& e) {
       fail(std::string("starting the probe failed: ") + e.what());
       unavailable = "the grader could not start your code (a grader problem, not yours)";
@@ -685,6 +668,9 @@ int grade(const Options& options, const Rubric& rubric) {
   try {
     initGoogleTest(report.seed, options.filter);
 #ifdef A6_GRADE_HAVE_GOLDEN
+    // The images: the grader's alone (the sandbox's user may not read them, whatever its view).
+    fs::create_directories(work / "images", ec);
+    fs::permissions(work / "images", fs::perms::owner_all, ec);
     a6::test::registerGoldenChecks((work / "images").string());
 #endif
     auto* collector = new Collector(rubric, report.tests, !options.quiet);
@@ -711,14 +697,12 @@ int grade(const Options& options, const Rubric& rubric) {
 #ifdef A6_GRADE_HAVE_PROBE
   if (probe != nullptr) {
     try {
-      const auto* client = static_cast<ProbeClient*>(probe.get());
-      std::string text = client->output();
-      if (text.size() > kProbeOutputCap) text.resize(kProbeOutputCap);
-      report.probeOutput = text;
+      const auto* client = static_cast<ProbePair*>(probe.get());
+      report.probeOutput = client->output(kProbeOutputCap);
       for (const std::string& note : client->notes()) report.notes.push_back("sandbox: " + note);
-      if (client->starts() > 1) {
-        report.notes.push_back("the probe was started " + std::to_string(client->starts()) +
-                               " times (restarted after crashes or time limits)");
+      if (client->restarts() > 0) {
+        report.notes.push_back("the probes were restarted " + std::to_string(client->restarts()) +
+                               " times (after crashes or time limits)");
       }
     } catch (...) {
     }
@@ -726,7 +710,12 @@ int grade(const Options& options, const Rubric& rubric) {
 #endif
   gStudent = nullptr;
   probe.reset();
-  killStrays();
+  // Whatever the submission left running: our re-parented children, and every process of its
+  // user (a new session, any name).
+  process::endStrayChildren({});
+  if (claim.held()) {
+    if (const std::string e = process::endProcessesOf(claim.uid()); !e.empty()) fail(e);
+  }
 
   // 4. Score, 5. report.
   try {
@@ -735,6 +724,9 @@ int grade(const Options& options, const Rubric& rubric) {
     fail(std::string("scoring failed: ") + e.what());
   }
   report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  rusage self{};
+  if (getrusage(RUSAGE_SELF, &self) == 0)
+    report.peakRssMiB = static_cast<double>(self.ru_maxrss) / 1024;
   int status = graderFailed ? 1 : 0;
   if (const std::string e = writeResultsJson(report, results); !e.empty()) {
     std::fprintf(stderr, "a6_grade: %s\n", e.c_str());
@@ -758,7 +750,8 @@ harness::StudentCode& student() { return *gStudent; }
 }  // namespace a6::test
 
 int main(int argc, char** argv) {
-  // What a probe leaves running when it ends is reparented here, to be killed (killStrays).
+  // What a probe leaves running when it ends is reparented here, to be ended
+  // (process::endStrayChildren).
   prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
   Options options;
   CLI::App app{"a6_grade: grades one Assignment 6 submission (docs/instructor.md)"};
@@ -776,14 +769,15 @@ int main(int argc, char** argv) {
                  "repeatable")
       ->allow_extra_args(false);  // one path per --hide: never the submission after it
   app.add_option("--sandbox-uid", options.sandboxUid,
-                 "as root, run the compiler and the probe as this user id instead of nobody "
-                 "(65534): processes of one user share the sandbox's process limit, so "
-                 "gradings that run at the same time need different ones (a6_batch does this)")
+                 "as root, run the compiler and the probe as this user id (default: a free uid "
+                 "from 65533 down, claimed for this grading by a lock in /run/lock). Every "
+                 "process of this uid is killed before and after the grading, so never give the "
+                 "uid of an account that runs anything else")
       ->check(CLI::Range(1u, 4294967294u));
   app.add_option("--jobs", options.jobs,
-                 "accepted for scripts that grade in batches; one grading compiles its six "
-                 "files one after another")
-      ->check(CLI::Range(0, 64));
+                 "how many of the six files are compiled at once (default 2; a6_batch gives 1, "
+                 "since it grades several submissions at once)")
+      ->check(CLI::Range(1, 64));
   app.add_option("--time-budget", options.timeBudget,
                  "seconds the student's code may take over all checks together (default 420); "
                  "checks after that fail unrun, so that a submission that loops in many places "

@@ -14,10 +14,13 @@
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <optional>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 
 #include "harness/wire.h"
+#include "process.h"
 
 namespace a6::grader {
 
@@ -29,6 +32,55 @@ namespace {
 
 constexpr int kProbeRequestFd = 3;  // the probe reads requests here
 constexpr int kProbeAnswerFd = 4;   // and answers here
+// The longest answer accepted, bytes: five times the longest the solution gives (805 KB, the
+// cloth scenes' states), so that a6_grade's memory stays bounded whatever a probe sends.
+constexpr std::size_t kMaxAnswerBytes = std::size_t{4} << 20;
+// What a probe may write in its work folder, bytes (a tmpfs of this size, as root).
+constexpr std::size_t kWorkDirBytes = std::size_t{16} << 20;
+// Answers nest a few levels (an object of arrays of states of vectors); deeper is garbage.
+constexpr int kMaxAnswerDepth = 12;
+
+// Checks an answer's nesting before it is parsed into a document (whose nodes take many times
+// the text's bytes, the deeper the more): a pass that keeps nothing.
+class NestingCheck final : public json::json_sax_t {
+ public:
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return deeper(); }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return --depth_ >= 0; }
+  bool start_array(std::size_t) override { return deeper(); }
+  bool end_array() override { return --depth_ >= 0; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    return false;
+  }
+
+  bool tooDeep() const { return tooDeep_; }
+
+ private:
+  bool deeper() {
+    tooDeep_ = ++depth_ > kMaxAnswerDepth;
+    return !tooDeep_;
+  }
+  int depth_ = 0;
+  bool tooDeep_ = false;
+};
+
+// Parses an answer whose nesting is within kMaxAnswerDepth; throws otherwise (wire::Malformed for
+// text that is not JSON).
+json parseAnswer(const std::string& body) {
+  NestingCheck check;
+  if (!json::sax_parse(body, &check) && check.tooDeep()) {
+    throw std::runtime_error("an answer nested deeper than " + std::to_string(kMaxAnswerDepth) +
+                             " levels");
+  }
+  return wire::parse(body);  // "not JSON: ..." for what the check found no JSON
+}
 
 std::string seconds(double s) {
   char text[32];
@@ -186,6 +238,7 @@ struct ProbeClient::Impl {
     spec.argv = {fs::absolute(probe).string()};
     spec.workDir = workRoot / ("probe-" + std::to_string(starts));
     spec.removeWorkDir = true;
+    spec.workDirTmpfsBytes = kWorkDirBytes;
     spec.limits = limits;
     spec.mapFds = {{request[0], kProbeRequestFd}, {answer[1], kProbeAnswerFd}};
     spec.hide = hide;
@@ -243,6 +296,60 @@ struct ProbeClient::Impl {
     return text;
   }
 
+  // One request's bytes out and one answer's text back, within `deadline`. Returns why not, or
+  // "" (the probe is stopped on a time-out, a crash or garbage).
+  std::string exchange(const std::string& bytes, Clock::time_point deadline, std::string& body) {
+    auto timedOut = [&] {
+      shutdown("ran out of time");
+      return "your code took longer than " + seconds(timeout) +
+             " s on this request (the time limit), so it was stopped";
+    };
+    Io io = sendAll(toProbe, bytes, deadline);
+    if (io == Io::TimedOut) return timedOut();
+    if (io == Io::Closed) return crashReport();
+    std::string header;
+    io = receiveExactly(fromProbe, 4, header, deadline);
+    if (io == Io::Ok) {
+      const std::uint32_t n =
+          wire::frameLength(reinterpret_cast<const unsigned char*>(header.data()));
+      if (n > kMaxAnswerBytes) {
+        shutdown("sent garbage");
+        return "garbage from the probe: an answer of " + std::to_string(n) +
+               " bytes announced, over the limit of " + std::to_string(kMaxAnswerBytes);
+      }
+      body.reserve(std::min<std::size_t>(n, 1u << 20));
+      io = receiveExactly(fromProbe, n, body, deadline);
+    }
+    if (io == Io::TimedOut) return timedOut();
+    if (io == Io::Closed) return crashReport();
+    return "";
+  }
+
+  // A probe just started: it must answer a request that runs no student code, and then show,
+  // in /proc, its seccomp filter on top of the sandbox's and a single thread
+  // (grader/probe/filter.h). Returns why it cannot serve, or "".
+  std::string verifyStarted(Clock::time_point deadline) {
+    harness::SceneRequest ping;
+    ping.frames = {-1};
+    std::string body;
+    if (std::string error = exchange(wire::frame(wire::encodeRunScene(ping)), deadline, body);
+        !error.empty()) {
+      return error;
+    }
+    const std::optional<process::Info> info = process::describe(process->pid());
+    const bool filtered =
+        info && info->seccompMode == 2 && (info->seccompFilters < 0 || info->seccompFilters >= 2);
+    if (info && filtered && info->threads == 1) return "";
+    const std::string what =
+        !info       ? "it could not be inspected"
+        : !filtered ? "it runs without its seccomp filter"
+                    : "it runs " + std::to_string(info->threads) + " threads instead of one";
+    shutdown("failed its start-up check");
+    return "the probe failed the grader's start-up check: " + what +
+           " (code that runs before main, such as a static initializer, must not start threads "
+           "or change how the program starts)";
+  }
+
   template <typename Result>
   Result call(const std::function<json()>& encode, Result (*decode)(const json&)) {
     std::lock_guard<std::mutex> lock(mutex);
@@ -255,52 +362,29 @@ struct ProbeClient::Impl {
       return failed;
     }
     checkQuiet();
-    if (std::string error = ensureStarted(); !error.empty()) {
+    const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                             std::chrono::duration<double>(timeout));
+    if (!process) {
+      if (std::string error = ensureStarted(); !error.empty()) {
+        failed.error = error;
+        return failed;
+      }
+      if (std::string error = verifyStarted(deadline); !error.empty()) {
+        failed.error = error;
+        return failed;
+      }
+    }
+    std::string body;
+    if (std::string error = exchange(bytes, deadline, body); !error.empty()) {
       failed.error = error;
       return failed;
     }
-    const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                             std::chrono::duration<double>(timeout));
-    auto timedOut = [&] {
-      shutdown("ran out of time");
-      failed.error = "your code took longer than " + seconds(timeout) +
-                     " s on this request (the time limit), so it was stopped";
-      return failed;
-    };
-    auto garbage = [&](const std::string& what) {
-      shutdown("sent garbage");
-      failed.error = "garbage from the probe: " + what;
-      return failed;
-    };
-
-    Io io = sendAll(toProbe, bytes, deadline);
-    if (io == Io::TimedOut) return timedOut();
-    if (io == Io::Closed) {
-      failed.error = crashReport();
-      return failed;
-    }
-    std::string header, body;
-    io = receiveExactly(fromProbe, 4, header, deadline);
-    if (io == Io::Ok) {
-      const std::uint32_t n =
-          wire::frameLength(reinterpret_cast<const unsigned char*>(header.data()));
-      if (n > wire::kMaxFrameBytes) {
-        return garbage("an answer of " + std::to_string(n) +
-                       " bytes announced, over the limit of " +
-                       std::to_string(wire::kMaxFrameBytes));
-      }
-      body.reserve(std::min<std::size_t>(n, 1u << 20));
-      io = receiveExactly(fromProbe, n, body, deadline);
-    }
-    if (io == Io::TimedOut) return timedOut();
-    if (io == Io::Closed) {
-      failed.error = crashReport();
-      return failed;
-    }
     try {
-      return decode(wire::parse(body));
+      return decode(parseAnswer(body));
     } catch (const std::exception& e) {
-      return garbage(e.what());
+      shutdown("sent garbage");
+      failed.error = std::string("garbage from the probe: ") + e.what();
+      return failed;
     }
   }
 };
@@ -393,6 +477,60 @@ std::vector<std::string> ProbeClient::notes() const {
 void ProbeClient::stop() {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   impl_->shutdown();
+}
+
+ProbePair::ProbePair(std::unique_ptr<ProbeClient> plain, std::unique_ptr<ProbeClient> models)
+    : plain_(std::move(plain)), models_(std::move(models)) {}
+
+void ProbePair::setRequestTimeout(double seconds) {
+  plain_->setRequestTimeout(seconds);
+  models_->setRequestTimeout(seconds);
+}
+
+void ProbePair::allowMoreStarts(int more) {
+  plain_->setMaxStarts(plain_->starts() + more);
+  models_->setMaxStarts(models_->starts() + more);
+}
+
+harness::SpringForceResult ProbePair::springForce(const harness::SpringForceRequest& r) {
+  return plain_->springForce(r);
+}
+harness::ForcesResult ProbePair::forces(const harness::ForcesRequest& r) {
+  return plain_->forces(r);
+}
+harness::SimulateResult ProbePair::simulate(const harness::SimulateRequest& r) {
+  return r.referenceForces ? models_->simulate(r) : plain_->simulate(r);
+}
+harness::ClothResult ProbePair::buildCloth(const ClothSpec& s) { return plain_->buildCloth(s); }
+harness::ParticlesResult ProbePair::emit(const harness::EmitRequest& r) { return plain_->emit(r); }
+harness::ParticlesResult ProbePair::runParticles(const harness::ParticleRunRequest& r) {
+  return r.referenceForces ? models_->runParticles(r) : plain_->runParticles(r);
+}
+harness::Box2DResult ProbePair::runBox2D(const harness::Box2DRequest& r) {
+  return plain_->runBox2D(r);
+}
+harness::SceneResult ProbePair::runScene(const harness::SceneRequest& r) {
+  return plain_->runScene(r);
+}
+
+std::string ProbePair::output(std::size_t cap) const {
+  std::string text = plain_->output();
+  const std::string models = models_->output();
+  if (!models.empty()) text += "[a6: what the probe with the reference forces printed]\n" + models;
+  if (text.size() > cap) text.resize(cap);
+  return text;
+}
+
+int ProbePair::restarts() const {
+  return std::max(0, plain_->starts() - 1) + std::max(0, models_->starts() - 1);
+}
+
+std::vector<std::string> ProbePair::notes() const {
+  std::vector<std::string> all = plain_->notes();
+  for (const std::string& n : models_->notes()) {
+    if (std::find(all.begin(), all.end(), n) == all.end()) all.push_back(n);
+  }
+  return all;
 }
 
 }  // namespace a6::grader

@@ -65,4 +65,37 @@ class ProbeClient final : public harness::StudentCode {
   std::unique_ptr<Impl> impl_;
 };
 
+/// The student's code as two probes built from the same objects (grader/DESIGN.md, "Two
+/// probes"): `plain` answers every request except those that ask for the reference forces (the
+/// steppers of tasks 3 and 5), which `models` answers. So the process that answers tasks 1 and 2
+/// holds no reference model it could call.
+class ProbePair final : public harness::StudentCode {
+ public:
+  ProbePair(std::unique_ptr<ProbeClient> plain, std::unique_ptr<ProbeClient> models);
+
+  /// For both probes (see ProbeClient).
+  void setRequestTimeout(double seconds);
+  /// Each probe may be started `more` more times from now on (a new check's restarts).
+  void allowMoreStarts(int more);
+
+  harness::SpringForceResult springForce(const harness::SpringForceRequest&) override;
+  harness::ForcesResult forces(const harness::ForcesRequest&) override;
+  harness::SimulateResult simulate(const harness::SimulateRequest&) override;
+  harness::ClothResult buildCloth(const ClothSpec&) override;
+  harness::ParticlesResult emit(const harness::EmitRequest&) override;
+  harness::ParticlesResult runParticles(const harness::ParticleRunRequest&) override;
+  harness::Box2DResult runBox2D(const harness::Box2DRequest&) override;
+  harness::SceneResult runScene(const harness::SceneRequest&) override;
+
+  /// What both printed (the plain probe's first), capped at `cap` bytes.
+  std::string output(std::size_t cap) const;
+  /// How often a probe was started again after a crash or a time limit (0 when each was
+  /// started at most once).
+  int restarts() const;
+  std::vector<std::string> notes() const;
+
+ private:
+  std::unique_ptr<ProbeClient> plain_, models_;
+};
+
 }  // namespace a6::grader

@@ -275,6 +275,7 @@ std::string resultsJson(const GradeReport& report) {
   extra["max_score"] = report.maxScore;
   extra["extra_credit"] = report.extraCredit;
   extra["seconds"] = round4(report.seconds);
+  extra["grader_peak_rss_mib"] = round4(report.peakRssMiB);
   Json outcomes = Json::object();
   for (const TestOutcome& t : report.tests) outcomes[t.name] = t.passed ? "passed" : "failed";
   extra["tests"] = std::move(outcomes);

@@ -55,6 +55,7 @@ struct GradeReport {
   double maxScore = 0;     ///< the rubric's total (extra credit not included)
   double extraCredit = 0;  ///< the part of `score` earned by extra-credit items
   double seconds = 0;
+  double peakRssMiB = 0;              ///< the grader's own peak memory (not its children's)
   std::string probeOutput;            ///< capped; shown to instructors only
   std::vector<std::string> warnings;  ///< rubric problems found while scoring
   std::vector<std::string> notes;     ///< for instructors: sandbox protections that could not

@@ -112,6 +112,7 @@ enum Stage : std::int32_t {
   kNoNewPrivs,
   kSeccomp,
   kExec,
+  kWorkTmpfs,
 };
 
 struct Record {
@@ -166,6 +167,7 @@ struct Plan {
   gid_t gid = 65534;
   pid_t parent = 0;
   std::vector<MountOp> ops;
+  std::string workTmpfs;               // tmpfs options for the work dir ("": none)
   std::vector<std::string> hidePaths;  // for messages, by op index
   std::vector<Limit> limits;
   std::vector<std::pair<int, int>> fds;  // {source, target} besides 0/1/2
@@ -221,12 +223,16 @@ void closeRange(int lo, int hi, int maxFd) {
 
   // Namespaces: the grader's files out of sight, then no network.
   if (p.root) {
-    if (!p.ops.empty()) {
+    if (!p.ops.empty() || !p.workTmpfs.empty()) {
       if (unshare(CLONE_NEWNS) != 0) {
         report(false, kUnshareMounts, errno, -1);
       } else if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) {
         report(false, kMountPrivate, errno, -1);
       } else {
+        // /dev/null, what covers a hidden file, opened before /dev itself may be covered.
+        char nullSource[32] = "/dev/null";
+        const int nullPath = ::open("/dev/null", O_PATH | O_CLOEXEC);
+        if (nullPath >= 0) procFdPath(nullPath, nullSource);
         // Everything to reveal, opened before anything is covered.
         for (std::size_t k = 0; k < p.ops.size(); ++k) {
           MountOp& op = p.ops[k];
@@ -246,7 +252,7 @@ void closeRange(int lo, int hi, int maxFd) {
               rc = mount("a6-hidden", op.path.c_str(), "tmpfs", MS_NOSUID | MS_NODEV | MS_NOEXEC,
                          "size=64k,mode=755");
             } else {
-              rc = mount("/dev/null", op.path.c_str(), nullptr, MS_BIND, nullptr);
+              rc = mount(nullSource, op.path.c_str(), nullptr, MS_BIND, nullptr);
               if (rc == 0) {
                 mount(nullptr, op.path.c_str(), nullptr, MS_BIND | MS_REMOUNT | MS_RDONLY, nullptr);
               }
@@ -279,6 +285,11 @@ void closeRange(int lo, int hi, int maxFd) {
           if (mount(op.source, op.path.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) {
             die(kReveal, index);
           }
+        }
+        // The work dir: a tmpfs of its own size, so that what the child writes is bounded.
+        if (!p.workTmpfs.empty() && mount("a6-work", p.workDir.c_str(), "tmpfs",
+                                          MS_NOSUID | MS_NODEV, p.workTmpfs.c_str()) != 0) {
+          die(kWorkTmpfs);
         }
       }
     }
@@ -505,6 +516,11 @@ std::string makePlan(const SandboxSpec& spec, Plan& plan) {
 
   if (std::string e = prepareWorkDir(spec.workDir, plan); !e.empty()) return e;
   plan.workDir = fs::absolute(spec.workDir).lexically_normal().string();
+  if (plan.root && spec.workDirTmpfsBytes > 0) {
+    plan.workTmpfs = "size=" + std::to_string(spec.workDirTmpfsBytes) +
+                     ",mode=0700,uid=" + std::to_string(plan.dropPrivileges ? plan.uid : 0) +
+                     ",gid=" + std::to_string(plan.dropPrivileges ? plan.gid : 0);
+  }
 
   // Hidden paths and what stays visible inside them.
   std::vector<fs::path> hidden;
@@ -534,7 +550,8 @@ std::string makePlan(const SandboxSpec& spec, Plan& plan) {
     std::string note =
         "not running as root, so these paths cannot be hidden and only file "
         "permissions protect them:";
-    for (const std::string& u : unreadable) note += " " + u;
+    for (std::size_t k = 0; k < unreadable.size() && k < 8; ++k) note += " " + unreadable[k];
+    if (unreadable.size() > 8) note += " and " + std::to_string(unreadable.size() - 8) + " more";
     plan.notes.push_back(note);
   }
   if (!plan.ops.empty()) {
@@ -641,6 +658,8 @@ std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec&
              ": " + err;
     case kChdir:
       return "entering the work dir " + plan.workDir + ": " + err;
+    case kWorkTmpfs:
+      return "mounting a tmpfs on the work dir " + plan.workDir + ": " + err;
     case kSetgroups:
       return "dropping supplementary groups: " + err;
     case kSetgid:
@@ -992,8 +1011,7 @@ bool isWithin(const std::filesystem::path& inner, const std::filesystem::path& o
   return true;
 }
 
-void hideExcept(const std::filesystem::path& secret,
-                const std::vector<std::filesystem::path>& keep,
+void hideExcept(const std::filesystem::path& secret, const std::vector<std::filesystem::path>& keep,
                 std::vector<std::filesystem::path>& out, int depth) {
   namespace fs = std::filesystem;
   std::vector<fs::path> inside;
@@ -1013,6 +1031,35 @@ void hideExcept(const std::filesystem::path& secret,
   for (fs::directory_iterator it(secret, ec), end; !ec && it != end; it.increment(ec)) {
     hideExcept(it->path(), inside, out, depth + 1);
   }
+}
+
+SandboxView allowOnly(const std::vector<std::filesystem::path>& visible,
+                      const std::vector<std::filesystem::path>& secrets) {
+  namespace fs = std::filesystem;
+  SandboxView view;
+  std::vector<fs::path> keep = {"/usr",
+                                "/bin",
+                                "/sbin",
+                                "/lib",
+                                "/lib32",
+                                "/lib64",
+                                "/libx32",
+                                "/etc/alternatives",
+                                "/etc/ld.so.cache",
+                                "/etc/ld.so.conf",
+                                "/etc/ld.so.conf.d",
+                                "/proc"};
+  for (const fs::path& v : visible) keep.push_back(fs::absolute(v).lexically_normal());
+  for (const fs::path& s : secrets) hideExcept(fs::absolute(s).lexically_normal(), keep, view.hide);
+  std::vector<fs::path> rest;
+  hideExcept("/", keep, rest);
+  // /dev: a fresh one, with only what a compiler or a program may read without harm.
+  rest.emplace_back("/dev");
+  for (const fs::path& p : rest) {
+    if (std::find(view.hide.begin(), view.hide.end(), p) == view.hide.end()) view.hide.push_back(p);
+  }
+  view.reveal = {"/dev/null", "/dev/zero", "/dev/urandom"};
+  return view;
 }
 
 }  // namespace a6::grader

@@ -6,13 +6,15 @@
 // fork(), so the child between fork and exec only makes system calls):
 //   1. its own session and process group (the parent kills the whole group with SIGKILL);
 //   2. as root: a private mount namespace where every `hide` path is covered (a directory by an
-//      empty read-only tmpfs, a file by /dev/null), with the `reveal` paths, the work dir and
-//      argv[0] bound back in place; then a new, empty network namespace;
+//      empty tmpfs, a file by /dev/null), with the `reveal` paths, the work dir and argv[0]
+//      bound back in place (allowOnly() makes `hide` an allow-list of the machine), and the
+//      work dir a size-capped tmpfs when asked; then a new, empty network namespace;
 //   3. rlimits: CPU, address space, file size, open files, processes, no core files;
 //   4. stdin from /dev/null, stdout and stderr into one pipe the parent drains (capped at
 //      Limits::outputBytes; the rest is read and dropped so the child never blocks), the
 //      requested fds, every other fd closed;
-//   5. cwd = the fresh work dir; as root: setgroups(0), setgid/setuid to `uid`/`gid` (nobody);
+//   5. cwd = the fresh work dir; as root: setgroups(0), setgid/setuid to `uid`/`gid` (a
+//      grading's own user, grader/process.h);
 //      a parent-death signal (SIGKILL);
 //   6. no_new_privs and a seccomp filter: socket() fails with EACCES (the network stays off even
 //      where namespaces are not permitted, e.g. an unprivileged Docker container), io_uring,
@@ -72,8 +74,10 @@ struct SandboxSpec {
   std::vector<std::filesystem::path> hide;  ///< paths the child must not be able to read
   std::vector<std::filesystem::path> reveal;  ///< paths inside hidden ones that stay visible
                                               ///< (the work dir and argv[0] always do)
-  uid_t uid = 65534;                          ///< who the child runs as when the grader is root
-  gid_t gid = 65534;                          ///< (nobody / nogroup)
+  std::size_t workDirTmpfsBytes = 0;  ///< > 0: the work dir is a tmpfs of this size (as root,
+                                      ///< in the child's mount namespace)
+  uid_t uid = 65534;                  ///< who the child runs as when the grader is root
+  gid_t gid = 65534;                  ///< (nobody / nogroup)
 };
 
 /// Runs a command to completion in the sandbox (the compiler, the linker). Never throws for
@@ -111,14 +115,28 @@ class SandboxedProcess {
   State* state_ = nullptr;
 };
 
+/// What a sandboxed child sees of the machine (SandboxSpec::hide and reveal).
+struct SandboxView {
+  std::vector<std::filesystem::path> hide;
+  std::vector<std::filesystem::path> reveal;
+};
+
+/// The allow-list view: everything hidden but the system's programs and libraries (/usr and the
+/// links into it, /etc/alternatives, the dynamic loader's cache), /proc, the devices /dev/null,
+/// /dev/zero and /dev/urandom (in a /dev of their own), and `visible`. A child's work dir and
+/// argv[0] are always visible too (SandboxSpec). As root only: without a mount namespace
+/// nothing is hidden (Exit::notes says so, naming the `secrets` first: the paths that matter,
+/// such as the grader's source and build trees, hidden except what is `visible` in them).
+SandboxView allowOnly(const std::vector<std::filesystem::path>& visible,
+                      const std::vector<std::filesystem::path>& secrets = {});
+
 /// True when `inner` is `outer` or lies inside it (both absolute and lexically normal).
 bool isWithin(const std::filesystem::path& inner, const std::filesystem::path& outer);
 
 /// Adds to `out` what SandboxSpec::hide needs so that `secret` cannot be read except the `keep`
 /// paths within it: the secret itself when nothing in it is kept, otherwise its other entries,
 /// level by level down to what is kept. Links are not covered (that would cover their targets).
-void hideExcept(const std::filesystem::path& secret,
-                const std::vector<std::filesystem::path>& keep,
+void hideExcept(const std::filesystem::path& secret, const std::vector<std::filesystem::path>& keep,
                 std::vector<std::filesystem::path>& out, int depth = 0);
 
 }  // namespace a6::grader

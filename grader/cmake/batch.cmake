@@ -9,7 +9,7 @@ target_link_libraries(a6_batch_core PRIVATE nlohmann_json::nlohmann_json)
 target_compile_options(a6_batch_core PRIVATE ${A6_WARNINGS})
 
 add_executable(a6_batch ${CMAKE_CURRENT_SOURCE_DIR}/batch_main.cpp)
-target_link_libraries(a6_batch PRIVATE a6_batch_core a6_report CLI11::CLI11)
+target_link_libraries(a6_batch PRIVATE a6_batch_core a6_report a6_process CLI11::CLI11)
 # The default rubric, as a6_grade reads it: part of every submission's fingerprint, so that a
 # changed rubric regrades.
 target_compile_definitions(a6_batch PRIVATE A6_DEFAULT_RUBRIC="${A6_DEFAULT_RUBRIC}")

@@ -122,9 +122,11 @@ list(APPEND A6_KIT_COMPILE_FLAGS -include ${A6_KIT_PCH})
 # What the probe links besides the student's six objects (helper "probe"'s probe.cmake).
 if(DEFINED A6_PROBE_LINK_MAIN AND DEFINED A6_PROBE_LINK_LIBRARIES)
   set(A6_KIT_PROBE_MAIN ${A6_PROBE_LINK_MAIN})
+  set(A6_KIT_MODELS_MAIN ${A6_PROBE_LINK_MODELS_MAIN})
   set(A6_KIT_LINK_INPUTS ${A6_PROBE_LINK_LIBRARIES})
 else()
   set(A6_KIT_PROBE_MAIN "")
+  set(A6_KIT_MODELS_MAIN "")
   set(A6_KIT_LINK_INPUTS "")
   message(STATUS "grader kit: no probe link line (grader/cmake/probe.cmake) yet")
 endif()
@@ -147,12 +149,14 @@ function(a6_json_array out)
 endfunction()
 a6_json_array(json_flags ${A6_KIT_COMPILE_FLAGS})
 a6_json_array(json_main ${A6_KIT_PROBE_MAIN})
+a6_json_array(json_models_main ${A6_KIT_MODELS_MAIN})
 a6_json_array(json_link ${A6_KIT_LINK_INPUTS})
 a6_json_array(json_secrets ${PROJECT_SOURCE_DIR} ${CMAKE_BINARY_DIR})
 file(GENERATE OUTPUT ${A6_KIT_JSON} CONTENT "{
   \"compiler\": \"${CMAKE_CXX_COMPILER}\",
   \"compileFlags\": ${json_flags},
   \"probeMain\": ${json_main},
+  \"modelsMain\": ${json_models_main},
   \"linkInputs\": ${json_link},
   \"starterObjects\": \"${A6_KIT_DIR}/starter\",
   \"dir\": \"${A6_KIT_DIR}\",

@@ -9,30 +9,35 @@ add_library(a6_wire STATIC ${PROJECT_SOURCE_DIR}/framework/harness/wire.cpp)
 target_link_libraries(a6_wire PUBLIC a6_harness_api nlohmann_json::nlohmann_json)
 target_compile_options(a6_wire PRIVATE ${A6_WARNINGS})
 
-# The probe's main, with the reference force models compiled in (anonymous namespace: student
-# code cannot link against them).
+# The probe's main, built twice. a6_probe_main serves every request and holds no reference model;
+# a6_probe_main_models, with the reference force models compiled in (anonymous namespace: student
+# code cannot link against them), is linked into a second probe that serves only the requests of
+# tasks 3 and 5 that ask for the reference forces (grader/DESIGN.md, "Two probes").
 add_library(a6_probe_main OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_main.cpp)
-target_include_directories(a6_probe_main PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
-target_compile_definitions(a6_probe_main PRIVATE A6_FORCE_MODELS="${A6_FORCE_MODELS}")
-target_link_libraries(a6_probe_main PRIVATE a6_harness_api nlohmann_json::nlohmann_json
-                                            PkgConfig::SECCOMP)
-target_compile_options(a6_probe_main PRIVATE ${A6_WARNINGS})
+add_library(a6_probe_main_models OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_main.cpp)
+target_include_directories(a6_probe_main_models PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+target_compile_definitions(a6_probe_main_models PRIVATE A6_FORCE_MODELS="${A6_FORCE_MODELS}")
+foreach(main a6_probe_main a6_probe_main_models)
+  target_link_libraries(${main} PRIVATE a6_harness_api nlohmann_json::nlohmann_json)
+  target_compile_options(${main} PRIVATE ${A6_WARNINGS})
+endforeach()
 
 # The kit: everything a probe links besides its main and the six student objects.
 add_library(a6_probe_kit STATIC $<TARGET_OBJECTS:a6_framework> $<TARGET_OBJECTS:a6_core>
                                 $<TARGET_OBJECTS:a6_wire>)
 set_target_properties(a6_probe_kit PROPERTIES LINKER_LANGUAGE CXX)
-target_link_libraries(a6_probe_kit INTERFACE a6_harness_api box2d::box2d PkgConfig::SECCOMP)
+target_link_libraries(a6_probe_kit INTERFACE a6_harness_api box2d::box2d)
 
 # How a submission's probe is linked (what grader/build.cpp runs, in the sandbox):
 #   <compiler> -o <probe> <A6_PROBE_LINK_MAIN> <the six task objects> <A6_PROBE_LINK_LIBRARIES>
 # For intake_build.cmake (included after this file) and for the tests' hostile probes.
 set(A6_PROBE_LINK_COMPILER ${CMAKE_CXX_COMPILER})
 set(A6_PROBE_LINK_MAIN "$<TARGET_OBJECTS:a6_probe_main>")
+set(A6_PROBE_LINK_MODELS_MAIN "$<TARGET_OBJECTS:a6_probe_main_models>")
 set(A6_PROBE_LINK_LIBRARIES
-    "$<TARGET_FILE:a6_probe_kit>" "$<TARGET_LINKER_FILE:box2d::box2d>" ${SECCOMP_LINK_LIBRARIES})
-set(A6_PROBE_LINK_TARGETS a6_probe_main a6_probe_kit)  # build these before linking a probe
-set(A6_PROBE_EXTRA_LINK ${SECCOMP_LINK_LIBRARIES})  # what kit.json adds after box2d
+    "$<TARGET_FILE:a6_probe_kit>" "$<TARGET_LINKER_FILE:box2d::box2d>")
+set(A6_PROBE_LINK_TARGETS a6_probe_main a6_probe_main_models a6_probe_kit)  # build these before linking a probe
+set(A6_PROBE_EXTRA_LINK "")  # what kit.json adds after box2d: nothing (no libseccomp)
 list(JOIN A6_PROBE_LINK_LIBRARIES " " _a6_probe_libs)
 file(GENERATE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/probe_link.txt CONTENT
 "# How a submission's probe is linked (grader/cmake/probe.cmake): the compiler, then -o and the
@@ -45,20 +50,27 @@ line=${CMAKE_CXX_COMPILER} -o PROBE ${A6_PROBE_LINK_MAIN} SPRING.o FORCES.o TIME
 ")
 unset(_a6_probe_libs)
 
-# Probes of the solution and of the starter, for the tests (linked as a submission's is).
+# Probes of the solution and of the starter, for the tests: with the reference models, so that
+# one probe answers every request of the suite.
 set(probe_sets starter)
 if(A6_HAVE_SOLUTION)
   list(APPEND probe_sets solution)
 endif()
 foreach(set IN LISTS probe_sets)
   add_executable(a6_probe_${set})
-  target_link_libraries(a6_probe_${set} PRIVATE a6_probe_main ${A6_${set}_OBJECTS} a6_probe_kit)
+  target_link_libraries(a6_probe_${set} PRIVATE a6_probe_main_models ${A6_${set}_OBJECTS}
+                                                a6_probe_kit)
 endforeach()
 
-# The sandbox, and the StudentCode that talks to a sandboxed probe.
+# The process layer (waiting, ending strays and a sandbox user's processes, claiming a user), the
+# sandbox, and the StudentCode that talks to a sandboxed probe.
+add_library(a6_process STATIC ${CMAKE_CURRENT_SOURCE_DIR}/process.cpp)
+target_include_directories(a6_process PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_compile_options(a6_process PRIVATE ${A6_WARNINGS})
+
 add_library(a6_sandbox STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox.cpp)
 target_include_directories(a6_sandbox PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(a6_sandbox PUBLIC PkgConfig::SECCOMP Threads::Threads)
+target_link_libraries(a6_sandbox PUBLIC a6_process PkgConfig::SECCOMP Threads::Threads)
 target_compile_options(a6_sandbox PRIVATE ${A6_WARNINGS})
 
 add_library(a6_probe_client STATIC ${CMAKE_CURRENT_SOURCE_DIR}/probe_client.cpp)

@@ -102,9 +102,10 @@ cmake --build "$build" --target a6_grade --parallel "$(nproc)"
 build_seconds=$(seconds_since "$t")
 say "a6_grade and its kit built in $build_seconds s"
 
-# 4. File permissions. The compiler and the probe run as nobody; as root, the sandbox also hides
-# the source and build trees from them in a private mount namespace, but Docker (Gradescope's
-# containers) may refuse that namespace, and then only file permissions keep student code from
+# 4. File permissions. The compiler and the probe run as a sandbox user of their own (a uid
+# without an account, so "other users" below); as root, the sandbox also shows them only an
+# allow-list of the machine in a private mount namespace, but Docker (Gradescope's containers)
+# may refuse that namespace, and then only file permissions keep student code from
 # reading the hidden tests, the reference images and models and the rubric (the run's notes say
 # which protection was missing). So nothing of the tree is readable by other users except the
 # kit a submission is compiled and linked against: the paths under the build tree that

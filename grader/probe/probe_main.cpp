@@ -8,24 +8,11 @@
 // can never be read as an answer. Student code that writes to fd 4 itself only produces an
 // answer the grader cannot decode, which fails that request ("garbage from the probe").
 //
-// Design note: the seccomp policy, installed once everything is ready, before the first request.
-// Everything the student's code runs after that point may only compute, allocate and print:
-//   allowed    read/write/readv/writev/pread64/pwrite64 on any fd, close, lseek, fstat (and
-//              fstatat on an fd only), brk, mmap/mremap/mprotect without PROT_EXEC, munmap,
-//              madvise, futex, clocks and sleeps, sched_yield, getpid/gettid, getrandom,
-//              signal masks and handlers, rt_sigreturn, tgkill on itself (abort(), so a failed
-//              assert reports SIGABRT), exit, exit_group
-//   EACCES     open, openat, openat2, creat, socket, socketpair, connect (fopen returns NULL,
-//              std::ifstream fails: a friendly failure the student's code can report)
-//   EPERM      fork, vfork, clone, execve, execveat, kill, tkill, ptrace, mmap/mprotect with
-//              PROT_EXEC (std::thread throws std::system_error)
-//   ENOSYS     everything else (what glibc expects of a syscall it may do without)
-// Killing on a refused call would be stricter but less helpful: the student's code sees an
-// ordinary failure and the test that ran it says what went wrong. Code that runs before main
-// (static initialisers) is not under this filter; the sandbox (an unprivileged user, resource
-// limits, a mount namespace hiding the grader's files, no network, a filter on sockets) covers it.
+// Design note: the seccomp filter (grader/probe/filter.h) is installed from the executable's
+// .preinit_array, before any constructor runs: the student's static initialisers already run
+// under it, on every thread. It is built and installed without libc or libseccomp, so a
+// submission cannot define a function that replaces the installation.
 #include <fcntl.h>
-#include <seccomp.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -38,96 +25,23 @@
 #include <string>
 
 #include "a6/a6.h"
+#include "filter.h"
 #include "harness/student_code.h"
 #include "harness/wire.h"
 #include "scenes/scene.h"
 
 namespace {
+#ifdef A6_FORCE_MODELS
+// Only in the second probe (a6_probe_main_models), which serves the requests that ask for the
+// reference forces; the probe that serves every other request holds no model.
 #include A6_FORCE_MODELS  // reference_models.inc, or own_models.inc in a student release
+a6::ForceModel forceModels() { return referenceForceModel(); }
+#else
+a6::ForceModel forceModels() { return {}; }
+#endif
 
 constexpr int kRequestFd = 3;
 constexpr int kAnswerFd = 4;
-
-// Builds and loads the filter described above; returns what failed, or "".
-std::string installFilter() {
-  scmp_filter_ctx ctx = seccomp_init(SCMP_ACT_ERRNO(ENOSYS));
-  if (ctx == nullptr) return "seccomp_init failed";
-  int rc = 0;
-  auto rule = [&](uint32_t action, int syscall, unsigned count = 0, scmp_arg_cmp a = {},
-                  scmp_arg_cmp b = {}) {
-    if (rc != 0) return;
-    if (count == 0) {
-      rc = seccomp_rule_add(ctx, action, syscall, 0);
-    } else if (count == 1) {
-      rc = seccomp_rule_add(ctx, action, syscall, 1, a);
-    } else {
-      rc = seccomp_rule_add(ctx, action, syscall, 2, a, b);
-    }
-  };
-  const uint32_t allow = SCMP_ACT_ALLOW;
-  for (int sc : {SCMP_SYS(read),
-                 SCMP_SYS(write),
-                 SCMP_SYS(readv),
-                 SCMP_SYS(writev),
-                 SCMP_SYS(pread64),
-                 SCMP_SYS(pwrite64),
-                 SCMP_SYS(close),
-                 SCMP_SYS(lseek),
-                 SCMP_SYS(fstat),
-                 SCMP_SYS(brk),
-                 SCMP_SYS(munmap),
-                 SCMP_SYS(madvise),
-                 SCMP_SYS(futex),
-                 SCMP_SYS(clock_gettime),
-                 SCMP_SYS(clock_getres),
-                 SCMP_SYS(gettimeofday),
-                 SCMP_SYS(time),
-                 SCMP_SYS(nanosleep),
-                 SCMP_SYS(clock_nanosleep),
-                 SCMP_SYS(sched_yield),
-                 SCMP_SYS(getpid),
-                 SCMP_SYS(gettid),
-                 SCMP_SYS(getrandom),
-                 SCMP_SYS(rt_sigprocmask),
-                 SCMP_SYS(rt_sigaction),
-                 SCMP_SYS(rt_sigreturn),
-                 SCMP_SYS(sigaltstack),
-                 SCMP_SYS(exit),
-                 SCMP_SYS(exit_group)}) {
-    rule(allow, sc);
-  }
-  // fstat(fd) is fstatat(fd, "", buf, AT_EMPTY_PATH) in glibc; a path lookup is refused.
-  rule(allow, SCMP_SYS(newfstatat), 1, SCMP_A3(SCMP_CMP_MASKED_EQ, AT_EMPTY_PATH, AT_EMPTY_PATH));
-  rule(SCMP_ACT_ERRNO(EACCES), SCMP_SYS(newfstatat), 1,
-       SCMP_A3(SCMP_CMP_MASKED_EQ, AT_EMPTY_PATH, 0));
-  // Memory, never executable.
-  for (int sc : {SCMP_SYS(mmap), SCMP_SYS(mprotect)}) {
-    rule(allow, sc, 1, SCMP_A2(SCMP_CMP_MASKED_EQ, PROT_EXEC, 0));
-    rule(SCMP_ACT_ERRNO(EPERM), sc, 1, SCMP_A2(SCMP_CMP_MASKED_EQ, PROT_EXEC, PROT_EXEC));
-  }
-  rule(allow, SCMP_SYS(mremap));
-  // abort() signals itself.
-  rule(allow, SCMP_SYS(tgkill), 1, SCMP_A0(SCMP_CMP_EQ, static_cast<scmp_datum_t>(getpid())));
-  // Files and the network: refused, politely.
-  for (int sc : {SCMP_SYS(open), SCMP_SYS(openat), SCMP_SYS(openat2), SCMP_SYS(creat),
-                 SCMP_SYS(socket), SCMP_SYS(socketpair), SCMP_SYS(connect)}) {
-    rule(SCMP_ACT_ERRNO(EACCES), sc);
-  }
-  // Other processes: refused.
-  for (int sc :
-       {SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(clone), SCMP_SYS(clone3), SCMP_SYS(execve),
-        SCMP_SYS(execveat), SCMP_SYS(kill), SCMP_SYS(tkill), SCMP_SYS(ptrace)}) {
-    rule(SCMP_ACT_ERRNO(EPERM), sc);
-  }
-  if (rc != 0) {
-    seccomp_release(ctx);
-    return std::string("seccomp_rule_add failed: ") + std::strerror(-rc);
-  }
-  rc = seccomp_load(ctx);
-  seccomp_release(ctx);
-  if (rc != 0) return std::string("seccomp_load failed: ") + std::strerror(-rc);
-  return "";
-}
 
 }  // namespace
 
@@ -143,17 +57,9 @@ int main() {
   // Output reaches the grader line by line, so a crash report shows the last lines printed.
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
 
-  // Everything the requests need is built before the filter: the harness and the scene list.
-  std::unique_ptr<a6::harness::StudentCode> code =
-      a6::harness::makeInProcess(referenceForceModel());
+  // The filter is on already (filter.h); the harness and the scene list.
+  std::unique_ptr<a6::harness::StudentCode> code = a6::harness::makeInProcess(forceModels());
   (void)a6::sceneNames();
-
-  const std::string filterError = installFilter();
-  if (!filterError.empty()) {
-    std::fprintf(stderr, "a6 probe: could not install the seccomp filter: %s\n",
-                 filterError.c_str());
-    return 3;
-  }
 
   for (;;) {
     std::string body;

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "intake.h"
+#include "sandbox_user.h"
 
 namespace fs = std::filesystem;
 using namespace a6::grader;
@@ -66,7 +67,10 @@ std::string describe(const Build& b) {
 
 class BuildProbe : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { kit_ = new Kit(loadKit(kitPath())); }
+  static void SetUpTestSuite() {
+    kit_ = new Kit(loadKit(kitPath()));
+    kit_->uid = a6::test::sandboxUid();  // ours alone: other tests compile beside us
+  }
   static void TearDownTestSuite() {
     delete kit_;
     kit_ = nullptr;
@@ -337,6 +341,46 @@ TEST_F(BuildProbe, TwoFilesClashingCostOneTask) {
   EXPECT_EQ(linkErrors, 1) << describe(b);
 }
 
+// Two probes from the same objects: the one that serves every request, and the one with the
+// reference force models for tasks 3 and 5. Both stripped: no symbol table to search.
+TEST_F(BuildProbe, BothProbesAreLinkedAndStripped) {
+  const Build b = build();
+  expectLinkedWithOthersCompiled(b, "");
+  for (const fs::path& probe : {b.probe, b.modelsProbe}) {
+    EXPECT_EQ(::access(probe.c_str(), X_OK), 0) << probe;
+    std::ifstream in(probe, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_GT(bytes.size(), 1000u);
+    EXPECT_EQ(bytes.find(std::string(".symtab\0", 8)), std::string::npos)
+        << probe << " is not stripped";
+  }
+}
+
+// The whole build has a time budget: slow files after it is used up are not compiled at all.
+TEST_F(BuildProbe, TheWholeBuildStaysWithinItsBudget) {
+  std::string slow =
+      "constexpr long spin(long k) { long s = 0; for (long i = 0; i < 2000; ++i)"
+      " for (long j = 0; j < 2000; ++j) s += i ^ j ^ k; return s; }\n";
+  for (int i = 0; i < 200; ++i) {
+    slow += "constexpr long c" + std::to_string(i) + " = spin(" + std::to_string(i) + ");\n";
+  }
+  for (const char* file : {"spring.cpp", "forces.cpp", "cloth.cpp", "joints.cpp"}) {
+    writeFile(submission_ / file, slow);
+  }
+  const Intake in = takeSubmission(submission_, root_ / "work" / "src");
+  const auto t0 = std::chrono::steady_clock::now();
+  const Build b = buildProbe(*kit_, in, root_ / "work" / "build", defaultCompileLimits(), 1, 6);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_TRUE(b.ok()) << describe(b);
+  int unbuilt = 0;
+  for (const char* file : {"spring.cpp", "forces.cpp", "cloth.cpp", "joints.cpp"}) {
+    EXPECT_EQ(task(b, file).status, Status::TimedOut) << describe(b);
+    if (task(b, file).messages.find("time budget") != std::string::npos) ++unbuilt;
+  }
+  EXPECT_GE(unbuilt, 2) << "files never compiled once the budget was used up\n" << describe(b);
+  EXPECT_LT(s, 60.0) << "a 6 s budget, the link and the two other files";
+}
+
 TEST_F(BuildProbe, ACompileThatNeverEndsTimesOut) {
   // Each constant costs the compiler about a second (4M loop iterations, under GCC's limits on
   // constexpr evaluation); two hundred of them, minutes.
@@ -368,7 +412,9 @@ TEST_F(BuildProbe, RunawayCompilesFailWithinTheLimits) {
       "F<N - 1, 2 * M + 1>::v; };\ntemplate <long M> struct F<0, M> { static constexpr long v = "
       "M; };\nlong x = F<40, 0>::v;\n",
       // An endless file.
-      "#include \"/dev/zero\"\n"};
+      "#include \"/dev/zero\"\n",
+      // A device that blocks: not there for the compiler.
+      "#include \"/dev/ptmx\"\n", "#include \"/dev/tty\"\n"};
   Limits limits = defaultCompileLimits();
   limits.wallSeconds = 5;
   for (const std::string& text : sources) {

@@ -7,7 +7,7 @@
 // entry, gradescope_package); each prints how long it took, and the last the total.
 //
 // Also checked: nothing of solution/ is in the zip, by path or by content (no line of a solution
-// file that the starter does not have), and student code runs as nobody and cannot read the
+// file that the starter does not have), and student code runs as a sandbox user and cannot read the
 // grader's files, with and without the mount namespace Docker may refuse (Gradescope's
 // containers): setup.sh's file permissions must then protect them.
 #include <gtest/gtest.h>
@@ -23,6 +23,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -477,14 +478,17 @@ TEST(Gradescope, StudentCodeRunsAsNobodyAndCannotReadTheGradersFiles) {
     makeSubmission(files);
     const Outcome r =
         runAutograder(docker ? "setpriv --bounding-set -sys_admin --inh-caps -sys_admin --" : "");
-    report(docker ? "run_autograder without mount namespaces" : "run_autograder, nobody check",
-           r.seconds);
+    report(
+        docker ? "run_autograder without mount namespaces" : "run_autograder, sandbox user check",
+        r.seconds);
     EXPECT_EQ(r.status, 0) << tail(r.output);
     const json j = results(r);
     ASSERT_FALSE(j.is_discarded());
     EXPECT_EQ(j["score"].get<double>(), 103) << "the solution's points: " << tail(r.output);
     const std::string html = readAll(package().root / "results" / "report.html");
-    EXPECT_TRUE(contains(html, "A6-WHO euid=65534")) << "the probe must run as nobody";
+    std::smatch who;
+    ASSERT_TRUE(std::regex_search(html, who, std::regex("A6-WHO euid=([0-9]+)"))) << tail(html);
+    EXPECT_GE(std::stol(who[1].str()), 60001) << "the probe must run as a sandbox user of its own";
     EXPECT_FALSE(contains(html, "A6-WHO READ")) << "student code read a grader's file";
     EXPECT_TRUE(contains(html, "A6-WHO denied " + (source / "tests/golden/manifest.json").string()))
         << "the probe's attempt was not seen";

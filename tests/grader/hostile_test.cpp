@@ -15,8 +15,10 @@
 //
 // Each case is its own ctest entry (--gtest_filter), so they run in parallel. The table of cases
 // and the scores they get is in docs/instructor.md, "Hostile submissions".
+#include <grp.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -70,12 +72,13 @@ struct Graded {
   fs::path out;
 };
 
-Graded grade(const fs::path& submission, const fs::path& out, const fs::path& rubric) {
+Graded grade(const fs::path& submission, const fs::path& out, const fs::path& rubric,
+             const std::string& extra = "") {
   Graded g;
   g.out = out;
   const std::string command = std::string(A6_GRADE_COMMAND) + " '" + submission.string() +
                               "' --out '" + out.string() + "' --rubric '" + rubric.string() +
-                              "' --quiet 2>&1";
+                              "' --quiet " + extra + " 2>&1";
   const auto start = std::chrono::steady_clock::now();
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return g;
@@ -421,9 +424,11 @@ TEST(Hostile, WritesFilesEverywhere) {
     EXPECT_NE(entry.path().filename(), kMarker) << entry.path();
   }
   expectOnlyGraderFiles(o.dir / "out");
-  // The probe said what it could not do; it could write only in its own working directory.
+  // The probe said what it could not do. Its static initialisers run under the probe's filter
+  // (grader/probe/filter.h), so it could not even write in its own working directory.
   const std::string report = readAll(o.dir / "out" / "report.html");
-  EXPECT_NE(report.find("hostile: WROTE ./a6_hostile_was_here"), std::string::npos);
+  EXPECT_NE(report.find("hostile: could not write ./a6_hostile_was_here"), std::string::npos);
+  EXPECT_EQ(report.find("hostile: WROTE ./a6_hostile_was_here"), std::string::npos);
   EXPECT_EQ(report.find("hostile: WROTE ./.."), std::string::npos);
   EXPECT_EQ(report.find("hostile: WROTE /"), std::string::npos);
 }
@@ -499,6 +504,103 @@ TEST(Hostile, WritesOnTheAnswerPipe) {
   checkFixture("garbage_on_answer_pipe", Case({1}, "garbage from the probe").crashes());
 }
 
+// The probe's filter: on before any static initializer, not made of functions a submission can
+// replace, on every thread (grader/probe/filter.h).
+TEST(Hostile, ReplacesTheFilterFunctions) {
+  const Outcome o = checkFixture("filter_override", {{}, "hostile: open refused"});
+  EXPECT_EQ(readAll(o.dir / "out" / "report.html").find("hostile: READ"), std::string::npos);
+}
+
+TEST(Hostile, StartsAThreadBeforeMain) {
+  const Outcome o = checkFixture("thread_before_main", {{}, "hostile: no thread before main"});
+  const std::string report = readAll(o.dir / "out" / "report.html");
+  EXPECT_EQ(report.find("hostile: READ"), std::string::npos);
+  EXPECT_EQ(report.find("hostile: a thread runs"), std::string::npos);
+}
+
+TEST(Hostile, AnIfuncResolverRunsBeforeTheFilter) {
+  checkFixture("ifunc_resolver", {{1}, "an ifunc symbol"});
+}
+
+TEST(Hostile, APreinitArrayEntryOfItsOwn) {
+  checkFixture("preinit_entry", {{1}, "a .preinit_array section"});
+}
+
+// Answers the grader must not read whole: bounded before they are read and before they are
+// parsed.
+TEST(Hostile, AnnouncesAnAnswerOfTwoGigabytes) {
+  const Outcome o = checkFixture("huge_answer", Case({1}, "over the limit").crashes());
+  EXPECT_LT(o.graded.results["extra_data"].value("grader_peak_rss_mib", 1e9), 300);
+}
+
+TEST(Hostile, SendsTheCostliestAnswersToParse) {
+  const Outcome o = checkFixture("wide_answer", Case({1}, "garbage from the probe").crashes());
+  const double peak = o.graded.results["extra_data"].value("grader_peak_rss_mib", 1e9);
+  std::printf("[ hostile  ] a6_grade's peak RSS against maximal answers: %.1f MiB\n", peak);
+  EXPECT_LT(peak, 300);
+}
+
+// The compiler sees an allow-list of the machine: not another readable checkout of the
+// repository (a TA's), which no deny-list of the grader's own trees would cover.
+TEST(Hostile, IncludesTheSolutionOfAnotherCheckout) {
+  if (geteuid() != 0) GTEST_SKIP() << "only root hides the machine (mount namespaces)";
+  const fs::path other = "/var/tmp/a6_other_checkout/solution";
+  fs::create_directories(other);
+  fs::copy_file(kSource / "solution" / "spring.cpp", other / "spring.cpp",
+                fs::copy_options::overwrite_existing);
+  fs::permissions("/var/tmp/a6_other_checkout", fs::perms::owner_all | fs::perms::others_read |
+                                                    fs::perms::others_exec | fs::perms::group_read |
+                                                    fs::perms::group_exec);
+  checkFixture("include_other_checkout", {{1}, "actual:   (0, 0)"});
+  fs::remove_all("/var/tmp/a6_other_checkout");
+}
+
+// The compiler sees no device but null, zero and urandom: it cannot be made to block.
+TEST(Hostile, IncludesADevice) {
+  checkFixture("include_device", {{1}, "spring.cpp did not compile", 90});
+}
+
+// One submission cannot zero the next: a process left running as the sandbox's user (by an
+// a6_grade killed with SIGKILL, say), in a session of its own, named with a newline, that kills
+// every process of its user in a loop. The next grading with the same uid ends it first and
+// gets full marks; and it is gone afterwards.
+TEST(Hostile, APoisonerLeftByAnotherGradingCostsNothing) {
+  if (geteuid() != 0) GTEST_SKIP() << "only root changes the sandbox's user";
+  constexpr uid_t kUid = 64321;  // far below the uids that gradings claim by default
+  const pid_t poisoner = fork();
+  if (poisoner == 0) {
+    if (setgroups(0, nullptr) != 0 || setgid(65534) != 0 || setuid(kUid) != 0) _exit(126);
+    setsid();
+    prctl(PR_SET_NAME, "a6\nx", 0, 0, 0);
+    if (fork() == 0) prctl(PR_SET_NAME, "a6\ny", 0, 0, 0);
+    for (;;) {
+      kill(-1, SIGKILL);
+      usleep(500);
+    }
+  }
+  ASSERT_GT(poisoner, 0);
+  const fs::path dir = caseDir("poisoner");
+  const Graded g = grade(stage(dir / "submission", "", {}), dir / "out", rubricFor(dir),
+                         "--sandbox-uid " + std::to_string(kUid));
+  waitpid(poisoner, nullptr, WNOHANG);
+  expectValidResults(g, 300);
+  const Rubric rubric = a6::grader::loadRubric(rubricFor(dir));
+  EXPECT_GE(g.results.value("score", -1.0), rubric.totalPoints) << "full marks\n" << g.output;
+  int left = 0;
+  std::error_code ec;
+  for (fs::directory_iterator it("/proc", ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string status = readAll(it->path() / "status");
+    const std::size_t at = status.find("\nUid:\t");
+    if (at != std::string::npos && std::stol(status.substr(at + 6)) == kUid &&
+        status.find("State:\tZ") == std::string::npos) {
+      ++left;
+    }
+  }
+  EXPECT_EQ(left, 0) << "processes of the sandbox's user outlived the grading";
+  kill(poisoner, SIGKILL);
+  waitpid(poisoner, nullptr, 0);
+}
+
 // Broken, not hostile.
 TEST(Broken, CompileErrorInOneFile) {
   checkFixture("compile_error", {{2}, "forces.cpp did not compile"});
@@ -544,6 +646,14 @@ TEST(Hostile, EveryFixtureHasACase) {
                                         "include_solution",
                                         "include_goldens",
                                         "fopen_secrets",
+                                        "filter_override",
+                                        "thread_before_main",
+                                        "ifunc_resolver",
+                                        "preinit_entry",
+                                        "huge_answer",
+                                        "wide_answer",
+                                        "include_device",
+                                        "include_other_checkout",
                                         "infinite_loop",
                                         "fork_in_code",
                                         "fork_bomb",

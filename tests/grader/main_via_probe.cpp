@@ -16,6 +16,7 @@
 #include <string>
 
 #include "probe_client.h"
+#include "sandbox_user.h"
 #include "suite.h"
 #include "summary.h"
 
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
   chmod(work, 0755);  // the probe may run as another user
   gProbe = std::make_unique<a6::grader::ProbeClient>(
       std::filesystem::absolute(probe), std::filesystem::path(work) / "run", a6::grader::Limits{});
+  gProbe->setUser(a6::test::sandboxUid(), 65534);  // ours alone: other tests run beside us
   ::testing::UnitTest::GetInstance()->listeners().Append(new a6::test::TaskSummary);
   const int status = RUN_ALL_TESTS();
   std::printf("A6-PROBE starts=%d\n", gProbe->starts());

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "harness/wire.h"
+#include "sandbox_user.h"
 
 namespace {
 #include "reference_models.inc"
@@ -71,6 +72,7 @@ bool contains(const std::string& text, const std::string& part) {
 TEST(ProbeClient, TheSolutionsProbeAnswersBitForBitAsInProcess) {
   TempDir tmp;
   ProbeClient probe(kSolution, tmp.path() / "run", Limits{});
+  probe.setUser(a6::test::sandboxUid(), 65534);
   auto local = harness::makeInProcess(referenceForceModel());
   auto same = [](const auto& viaProbe, const auto& inProcess, const char* what) {
     EXPECT_TRUE(viaProbe.ok()) << what << ": " << viaProbe.error;
@@ -145,6 +147,7 @@ TEST(ProbeClient, TheSolutionsProbeAnswersBitForBitAsInProcess) {
 TEST(ProbeClient, PerRequestOverheadIsSmall) {
   TempDir tmp;
   ProbeClient probe(kSolution, tmp.path() / "run", Limits{});
+  probe.setUser(a6::test::sandboxUid(), 65534);
   auto local = harness::makeInProcess(referenceForceModel());
   ASSERT_TRUE(probe.springForce(spring(10)).ok());  // started and warm
   constexpr int kRequests = 2000;
@@ -166,6 +169,7 @@ TEST(ProbeClient, PerRequestOverheadIsSmall) {
   // A fresh probe: start-up plus the first request.
   TempDir tmp2;
   ProbeClient fresh(kSolution, tmp2.path() / "run", Limits{});
+  fresh.setUser(a6::test::sandboxUid(), 65534);
   t0 = Clock::now();
   ASSERT_TRUE(fresh.springForce(spring(1)).ok());
   const double firstRequest = since(t0);
@@ -185,6 +189,7 @@ class HostileProbe : public ::testing::Test {
  protected:
   TempDir tmp;
   ProbeClient probe{kHostile, tmp.path() / "run", Limits{}};
+  void SetUp() override { probe.setUser(a6::test::sandboxUid(), 65534); }
   void expectHealthy() {
     const auto r = probe.springForce(spring(10));
     EXPECT_TRUE(r.ok()) << r.error;
@@ -302,6 +307,7 @@ TEST_F(HostileProbe, AfterTooManyStartsRequestsFailAtOnce) {
 TEST(ProbeClient, AMissingProbeFailsEveryRequestWithTheReason) {
   TempDir tmp;
   ProbeClient probe(tmp.path() / "nothing-here", tmp.path() / "run", Limits{});
+  probe.setUser(a6::test::sandboxUid(), 65534);
   const auto r = probe.emit(harness::EmitRequest{});
   EXPECT_TRUE(contains(r.error, "could not start the probe: exec ")) << r.error;
   EXPECT_TRUE(contains(r.error, "No such file or directory")) << r.error;
@@ -331,6 +337,7 @@ TEST(ProbeClient, AsRootItsProtectionsApplyWithoutNotes) {
   }
   TempDir tmp;
   ProbeClient probe(kSolution, tmp.path() / "run", Limits{});
+  probe.setUser(a6::test::sandboxUid(), 65534);
   probe.setHidden({tmp.path() / "secret"});
   fs::create_directories(tmp.path() / "secret");
   EXPECT_TRUE(probe.springForce(spring(1)).ok());

@@ -79,9 +79,9 @@ GradeReport sampleReport() {
                   outcome("Task6Joints.MouseA", true),
                   outcome("Task6Joints.MouseB", false, "no")};
   report.intake.files["spring.cpp"] = "/work/src/spring.cpp";
-  report.build.tasks.push_back(TaskBuild{"spring.cpp", TaskBuild::Status::Compiled, "", 0.1});
+  report.build.tasks.push_back(TaskBuild{"spring.cpp", TaskBuild::Status::Compiled, "", 0.1, {}});
   report.build.tasks.push_back(
-      TaskBuild{"cloth.cpp", TaskBuild::Status::CompileError, "cloth.cpp:3: error: oops", 0.1});
+      TaskBuild{"cloth.cpp", TaskBuild::Status::CompileError, "cloth.cpp:3: error: oops", 0.1, {}});
   report.seconds = 12.3;
   score(report, rubric());
   return report;

@@ -1,0 +1,150 @@
+// The process layer (grader/process.h) alone: waiting for one child, ending strays without
+// reaping what is kept, ending every process of a sandbox user whatever it is named, and claiming
+// a user per grading.
+#include "process.h"
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
+
+namespace {
+
+namespace process = a6::grader::process;
+
+// A child that exits with `code` after `ms` milliseconds.
+pid_t childExiting(int code, int ms) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+    _exit(code);
+  }
+  return pid;
+}
+
+// Processes whose real or effective uid is `uid`, zombies left out.
+int aliveOf(uid_t uid) {
+  int n = 0;
+  for (const process::Info& p : process::all()) {
+    if ((p.realUid == uid || p.effectiveUid == uid) && p.state != 'Z') ++n;
+  }
+  return n;
+}
+
+// As `uid`: a session of its own, a name with a newline (what a line-by-line reader of
+// /proc/PID/stat skips), a child of the same kind, and SIGKILL for every process of its user,
+// in a loop. What poisoned the next grading before the process layer.
+pid_t startPoisoner(uid_t uid) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (syscall(SYS_setgroups, 0, nullptr) != 0 || syscall(SYS_setgid, 65534) != 0 ||
+        syscall(SYS_setuid, uid) != 0) {
+      _exit(126);
+    }
+    setsid();
+    prctl(PR_SET_NAME, "a6\nx", 0, 0, 0);
+    if (fork() == 0) prctl(PR_SET_NAME, "a6\ny", 0, 0, 0);
+    for (;;) {
+      kill(-1, SIGKILL);
+      usleep(1000);
+    }
+  }
+  return pid;
+}
+
+TEST(ProcessWait, GivesTheStatusOfItsOwnChild) {
+  const pid_t pid = childExiting(7, 10);
+  const std::optional<int> status = process::waitFor(pid, 30);
+  ASSERT_TRUE(status.has_value());
+  EXPECT_TRUE(WIFEXITED(*status));
+  EXPECT_EQ(WEXITSTATUS(*status), 7);
+}
+
+TEST(ProcessWait, SaysWhenThePidIsNoChildOfOurs) {
+  bool vanished = false;
+  EXPECT_FALSE(process::waitFor(getppid(), 1, &vanished).has_value());
+  EXPECT_TRUE(vanished);
+}
+
+TEST(ProcessWait, ARunningChildGivesNothingYet) {
+  const pid_t pid = childExiting(0, 3000);
+  bool vanished = true;
+  EXPECT_FALSE(process::waitFor(pid, 0, &vanished).has_value());
+  EXPECT_FALSE(vanished);
+  kill(pid, SIGKILL);
+  EXPECT_TRUE(process::waitFor(pid, 30).has_value());
+}
+
+// The batch's hang: a kept child that has exited must still be there for its own wait after a
+// sweep for strays, however often the sweep runs.
+TEST(ProcessStrays, AKeptChildThatExitedIsNeverReapedByASweep) {
+  for (int round = 0; round < 20; ++round) {
+    const pid_t kept = childExiting(3, 0);
+    const pid_t stray = childExiting(0, 60000);
+    for (int k = 0; k < 5; ++k) {
+      process::endStrayChildren({kept});
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    const std::optional<int> status = process::waitFor(kept, 30);
+    ASSERT_TRUE(status.has_value()) << "round " << round << ": the kept child was reaped";
+    EXPECT_EQ(WEXITSTATUS(*status), 3);
+    bool vanished = false;
+    EXPECT_FALSE(process::waitFor(stray, 0, &vanished).has_value());
+    EXPECT_TRUE(vanished) << "the stray was ended and reaped";
+  }
+}
+
+TEST(ProcessUsers, TwoClaimsNeverShareAUid) {
+  if (geteuid() != 0) GTEST_SKIP() << "only root changes the sandbox's user";
+  std::string e1, e2;
+  const process::UidClaim a = process::claimUid(std::nullopt, e1);
+  const process::UidClaim b = process::claimUid(std::nullopt, e2);
+  ASSERT_TRUE(a.held()) << e1;
+  ASSERT_TRUE(b.held()) << e2;
+  EXPECT_NE(a.uid(), b.uid());
+  EXPECT_NE(a.uid(), 65534u) << "never nobody: other programs run as nobody";
+}
+
+TEST(ProcessUsers, EveryProcessOfAUserEndsWhateverItIsNamed) {
+  if (geteuid() != 0) GTEST_SKIP() << "only root changes the sandbox's user";
+  std::string error;
+  process::UidClaim claim = process::claimUid(std::nullopt, error);
+  ASSERT_TRUE(claim.held()) << error;
+  const uid_t uid = claim.uid();
+  const pid_t poisoner = startPoisoner(uid);
+  for (int k = 0; k < 200 && aliveOf(uid) < 2; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_GE(aliveOf(uid), 1) << "the poisoner did not start";
+  EXPECT_EQ(process::endProcessesOf(uid), "");
+  EXPECT_EQ(aliveOf(uid), 0);
+  process::waitFor(poisoner, 5);
+}
+
+TEST(ProcessUsers, AClaimEndsWhatAnEarlierGradingLeftBehind) {
+  if (geteuid() != 0) GTEST_SKIP() << "only root changes the sandbox's user";
+  std::string error;
+  uid_t uid = 0;
+  {
+    process::UidClaim first = process::claimUid(std::nullopt, error);
+    ASSERT_TRUE(first.held()) << error;
+    uid = first.uid();
+  }
+  // Left running after the claim was released (an a6_grade killed with SIGKILL).
+  const pid_t poisoner = startPoisoner(uid);
+  for (int k = 0; k < 200 && aliveOf(uid) < 1; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_GE(aliveOf(uid), 1);
+  const process::UidClaim again = process::claimUid(uid, error);
+  ASSERT_TRUE(again.held()) << error;
+  EXPECT_EQ(aliveOf(uid), 0) << "a claimed user starts with no process";
+  process::waitFor(poisoner, 5);
+}
+
+}  // namespace
