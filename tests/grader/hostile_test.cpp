@@ -544,15 +544,16 @@ TEST(Hostile, SendsTheCostliestAnswersToParse) {
 // repository (a TA's), which no deny-list of the grader's own trees would cover.
 TEST(Hostile, IncludesTheSolutionOfAnotherCheckout) {
   if (geteuid() != 0) GTEST_SKIP() << "only root hides the machine (mount namespaces)";
-  const fs::path other = "/var/tmp/a6_other_checkout/solution";
-  fs::create_directories(other);
-  fs::copy_file(kSource / "solution" / "spring.cpp", other / "spring.cpp",
+  // Beside the grader's trees, readable by everyone, as a TA's second checkout would be.
+  const fs::path other = fs::path("/var/tmp/a6_other_checkout" + kSource.string());
+  fs::create_directories(other / "solution");
+  fs::copy_file(kSource / "solution" / "spring.cpp", other / "solution" / "spring.cpp",
                 fs::copy_options::overwrite_existing);
-  fs::permissions("/var/tmp/a6_other_checkout", fs::perms::owner_all | fs::perms::others_read |
-                                                    fs::perms::others_exec | fs::perms::group_read |
-                                                    fs::perms::group_exec);
+  for (fs::path p = other; p != "/var/tmp"; p = p.parent_path()) {
+    fs::permissions(p, fs::perms::others_read | fs::perms::others_exec, fs::perm_options::add);
+  }
   checkFixture("include_other_checkout", {{1}, "actual:   (0, 0)"});
-  fs::remove_all("/var/tmp/a6_other_checkout");
+  fs::remove_all(other);
 }
 
 // The compiler sees no device but null, zero and urandom: it cannot be made to block.
