@@ -100,22 +100,15 @@ struct Program {
     put(BPF_JMP | BPF_JEQ | BPF_K, static_cast<unsigned>(nr), 0, 1);
     ret(action);
   }
-  // With the syscall number in A: for `nr`, `yes` when argument `arg` has any of `bits`, `no`
-  // when it has none; else on to what follows (A still holds the number).
-  void onBits(long nr, int arg, unsigned bits, unsigned yes, unsigned no) {
+  // With the syscall number in A: for `nr`, `yes` when argument `arg` passes `test` against
+  // `k` (BPF_JSET: has any of the bits k; BPF_JEQ: equals k), `no` when it does not; else on to
+  // what follows (A still holds the number).
+  void onArg(long nr, int arg, unsigned short test, unsigned k, unsigned yes, unsigned no) {
     put(BPF_JMP | BPF_JEQ | BPF_K, static_cast<unsigned>(nr), 0, 4);
     put(BPF_LD | BPF_W | BPF_ABS, argLow(arg));
-    put(BPF_JMP | BPF_JSET | BPF_K, bits, 0, 1);
+    put(BPF_JMP | test | BPF_K, k, 0, 1);
     ret(yes);
     ret(no);
-  }
-  // For `nr`, `action` when argument `arg` equals `value`, else `otherwise`.
-  void onValue(long nr, int arg, unsigned value, unsigned action, unsigned otherwise) {
-    put(BPF_JMP | BPF_JEQ | BPF_K, static_cast<unsigned>(nr), 0, 4);
-    put(BPF_LD | BPF_W | BPF_ABS, argLow(arg));
-    put(BPF_JMP | BPF_JEQ | BPF_K, value, 0, 1);
-    ret(action);
-    ret(otherwise);
   }
 };
 
@@ -150,12 +143,12 @@ void buildPolicy(Program& p, long self) {
   p.on(SYS_time, kAllow);
 #endif
   // fstat(fd) is fstatat(fd, "", buf, AT_EMPTY_PATH) in glibc; a path lookup is refused.
-  p.onBits(SYS_newfstatat, 3, AT_EMPTY_PATH, kAllow, errnoAction(EACCES));
+  p.onArg(SYS_newfstatat, 3, BPF_JSET, AT_EMPTY_PATH, kAllow, errnoAction(EACCES));
   // Memory, never executable.
-  p.onBits(SYS_mmap, 2, PROT_EXEC, errnoAction(EPERM), kAllow);
-  p.onBits(SYS_mprotect, 2, PROT_EXEC, errnoAction(EPERM), kAllow);
+  p.onArg(SYS_mmap, 2, BPF_JSET, PROT_EXEC, errnoAction(EPERM), kAllow);
+  p.onArg(SYS_mprotect, 2, BPF_JSET, PROT_EXEC, errnoAction(EPERM), kAllow);
   // abort() signals itself.
-  p.onValue(SYS_tgkill, 0, static_cast<unsigned>(self), kAllow, errnoAction(EPERM));
+  p.onArg(SYS_tgkill, 0, BPF_JEQ, static_cast<unsigned>(self), kAllow, errnoAction(EPERM));
   // Files and the network: refused, politely.
   for (long nr : {SYS_openat, SYS_openat2, SYS_socket, SYS_socketpair, SYS_connect}) {
     p.on(nr, errnoAction(EACCES));

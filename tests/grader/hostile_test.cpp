@@ -15,10 +15,8 @@
 //
 // Each case is its own ctest entry (--gtest_filter), so they run in parallel. The table of cases
 // and the scores they get is in docs/instructor.md, "Hostile submissions".
-#include <grp.h>
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -35,6 +33,7 @@
 #include <thread>
 #include <vector>
 
+#include "poisoner.h"
 #include "rubric.h"
 #include "staging.h"
 
@@ -568,17 +567,7 @@ TEST(Hostile, IncludesADevice) {
 TEST(Hostile, APoisonerLeftByAnotherGradingCostsNothing) {
   if (geteuid() != 0) GTEST_SKIP() << "only root changes the sandbox's user";
   constexpr uid_t kUid = 64321;  // far below the uids that gradings claim by default
-  const pid_t poisoner = fork();
-  if (poisoner == 0) {
-    if (setgroups(0, nullptr) != 0 || setgid(65534) != 0 || setuid(kUid) != 0) _exit(126);
-    setsid();
-    prctl(PR_SET_NAME, "a6\nx", 0, 0, 0);
-    if (fork() == 0) prctl(PR_SET_NAME, "a6\ny", 0, 0, 0);
-    for (;;) {
-      kill(-1, SIGKILL);
-      usleep(500);
-    }
-  }
+  const pid_t poisoner = a6::test::startPoisoner(kUid);
   ASSERT_GT(poisoner, 0);
   const fs::path dir = caseDir("poisoner");
   const Graded g = grade(stage(dir / "submission", "", {}), dir / "out", rubricFor(dir),

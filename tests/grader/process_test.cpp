@@ -5,13 +5,13 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/prctl.h>
-#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <thread>
+
+#include "poisoner.h"
 
 namespace {
 
@@ -34,27 +34,6 @@ int aliveOf(uid_t uid) {
     if ((p.realUid == uid || p.effectiveUid == uid) && p.state != 'Z') ++n;
   }
   return n;
-}
-
-// As `uid`: a session of its own, a name with a newline (what a line-by-line reader of
-// /proc/PID/stat skips), a child of the same kind, and SIGKILL for every process of its user,
-// in a loop. What poisoned the next grading before the process layer.
-pid_t startPoisoner(uid_t uid) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (syscall(SYS_setgroups, 0, nullptr) != 0 || syscall(SYS_setgid, 65534) != 0 ||
-        syscall(SYS_setuid, uid) != 0) {
-      _exit(126);
-    }
-    setsid();
-    prctl(PR_SET_NAME, "a6\nx", 0, 0, 0);
-    if (fork() == 0) prctl(PR_SET_NAME, "a6\ny", 0, 0, 0);
-    for (;;) {
-      kill(-1, SIGKILL);
-      usleep(1000);
-    }
-  }
-  return pid;
 }
 
 TEST(ProcessWait, GivesTheStatusOfItsOwnChild) {
@@ -116,7 +95,7 @@ TEST(ProcessUsers, EveryProcessOfAUserEndsWhateverItIsNamed) {
   process::UidClaim claim = process::claimUid(std::nullopt, error);
   ASSERT_TRUE(claim.held()) << error;
   const uid_t uid = claim.uid();
-  const pid_t poisoner = startPoisoner(uid);
+  const pid_t poisoner = a6::test::startPoisoner(uid);
   for (int k = 0; k < 200 && aliveOf(uid) < 2; ++k) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
@@ -136,7 +115,7 @@ TEST(ProcessUsers, AClaimEndsWhatAnEarlierGradingLeftBehind) {
     uid = first.uid();
   }
   // Left running after the claim was released (an a6_grade killed with SIGKILL).
-  const pid_t poisoner = startPoisoner(uid);
+  const pid_t poisoner = a6::test::startPoisoner(uid);
   for (int k = 0; k < 200 && aliveOf(uid) < 1; ++k) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
