@@ -56,9 +56,11 @@ std::optional<int> waitFor(pid_t pid, double seconds, bool* vanished = nullptr);
 /// were ended.
 int endStrayChildren(const std::vector<pid_t>& keep);
 
-/// Ends every process whose real or effective uid is `uid` (never uid 0): a helper running as
-/// that uid sends SIGKILL to all of them (kill(-1)), until /proc shows none alive. Zombies that
-/// are our children are reaped. Returns "" when none is left, else why not.
+/// Ends every process whose real or effective uid is `uid` (never uid 0), found in /proc by
+/// uid whatever it is named: each is stopped (a stopped process cannot fork), then killed,
+/// through a pidfd so that a reused pid is never hit; repeated until /proc shows none alive or
+/// `seconds` pass. Zombies that are our children are reaped. Returns "" when none is left, else
+/// why not.
 std::string endProcessesOf(uid_t uid, double seconds = 5);
 
 /// A sandbox user held for one grading (see the design note): released, and its processes ended,
