@@ -20,8 +20,9 @@ struct Kit {
   std::string compiler;                   ///< absolute path of the C++ compiler
   std::vector<std::string> compileFlags;  ///< pinned: -std=c++17 -O2 -ffp-contract=off -I...
   std::vector<std::string> probeMain;     ///< the probe's main object(s), linked first
-  std::vector<std::string> modelsMain;    ///< the same main with the reference force models,
-                                          ///< for the second probe (Build::modelsProbe)
+  std::vector<std::string> modelsMain;    ///< the same main, asking the grader for the
+                                          ///< reference forces: the second probe's
+                                          ///< (Build::modelsProbe)
   std::vector<std::string> linkInputs;    ///< after the six task objects: the probe kit
                                           ///< library, Box2D, libseccomp
   std::filesystem::path starterObjects;   ///< folder with <task>.o (and <task>.syms: its
@@ -65,9 +66,9 @@ struct Build {
   std::string error;                  ///< the probe could not be linked at all
   std::filesystem::path probe;        ///< the linked probe executable (workDir/a6_probe): it
                                       ///< serves every request and holds no reference model
-  std::filesystem::path modelsProbe;  ///< the same objects with the reference force models
-                                      ///< (workDir/a6_probe_models), for the requests that ask
-                                      ///< for the reference forces
+  std::filesystem::path modelsProbe;  ///< the same objects with a main that asks the grader
+                                      ///< for the reference forces (workDir/a6_probe_models),
+                                      ///< for the requests that use them
   std::vector<TaskBuild> tasks;       ///< in task order
   double seconds = 0;                 ///< compiling and linking, wall clock
   double linkSeconds = 0;             ///< of which linking (all attempts)

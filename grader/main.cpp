@@ -70,6 +70,15 @@ using namespace a6::grader;
 
 namespace {
 
+#ifdef A6_FORCE_MODELS
+// The reference force models (tasks 1 and 2 solved; in a student release, empty: the student's
+// own). They stay in this process: the probe of tasks 3 and 5 asks for each force over a pipe
+// (harness/force_channel.h).
+#include A6_FORCE_MODELS
+#else
+a6::ForceModel referenceForceModel() { return {}; }
+#endif
+
 using Clock = std::chrono::steady_clock;
 
 constexpr double kDefaultTimeLimit = 10;            // s, for a test that matches no item
@@ -644,8 +653,9 @@ int grade(const Options& options, const Rubric& rubric) {
         c->setUser(sandboxUid, kSandboxGid);
         return c;
       };
-      auto pair = std::make_unique<ProbePair>(client(report.build.probe, "run"),
-                                              client(report.build.modelsProbe, "run-models"));
+      std::unique_ptr<ProbeClient> models = client(report.build.modelsProbe, "run-models");
+      models->serveForces(referenceForceModel());
+      auto pair = std::make_unique<ProbePair>(client(report.build.probe, "run"), std::move(models));
       ProbePair* raw = pair.get();
       setTimeout = [raw](double seconds) { raw->setRequestTimeout(seconds); };
       newCheck = [raw] { raw->allowMoreStarts(kStartsPerCheck); };

@@ -19,6 +19,7 @@
 #include <thread>
 #include <utility>
 
+#include "harness/force_channel.h"
 #include "harness/wire.h"
 #include "process.h"
 
@@ -169,6 +170,56 @@ Io receiveExactly(int fd, std::size_t n, std::string& out, Clock::time_point dea
   return Io::Ok;
 }
 
+// The reference forces for one probe (harness/force_channel.h): two pipes the probe asks on (its
+// fds 5 and 6) and a thread of the grader that answers them; stopped and joined when destroyed,
+// whatever the probe does (a stop pipe wakes the thread).
+class ForceServer {
+ public:
+  ForceServer() = default;
+  ForceServer(const ForceServer&) = delete;
+  ForceServer& operator=(const ForceServer&) = delete;
+  ~ForceServer() {
+    closeFd(stop_[1]);  // the thread sees the stop pipe end
+    if (thread_.joinable()) thread_.join();
+    for (int* fd : {&requests_[0], &requests_[1], &answers_[0], &answers_[1], &stop_[0]}) {
+      closeFd(*fd);
+    }
+  }
+
+  /// The pipes; false (with `error`) when they cannot be made.
+  bool open(std::string& error) {
+    if (pipe2(requests_, O_CLOEXEC) == 0 && pipe2(answers_, O_CLOEXEC) == 0 &&
+        pipe2(stop_, O_CLOEXEC) == 0) {
+      return true;
+    }
+    error = std::string("pipe: ") + std::strerror(errno);
+    return false;
+  }
+  /// The probe's ends, as SandboxSpec::mapFds.
+  std::vector<std::pair<int, int>> probeFds() const {
+    return {{requests_[1], harness::forcechannel::kRequestFd},
+            {answers_[0], harness::forcechannel::kAnswerFd}};
+  }
+  /// Once the probe has its ends: closes ours of them and starts answering with `models`.
+  void start(const ForceModel& models) {
+    closeFd(requests_[1]);
+    closeFd(answers_[0]);
+    thread_ = std::thread([this, models] {
+      harness::forcechannel::serve(requests_[0], answers_[1], stop_[0], models);
+      closeFd(requests_[0]);  // a probe still waiting for an answer reads the end, not nothing
+      closeFd(answers_[1]);
+    });
+  }
+
+ private:
+  static void closeFd(int& fd) {
+    if (fd >= 0) ::close(fd);
+    fd = -1;
+  }
+  int requests_[2] = {-1, -1}, answers_[2] = {-1, -1}, stop_[2] = {-1, -1};
+  std::thread thread_;
+};
+
 }  // namespace
 
 struct ProbeClient::Impl {
@@ -180,7 +231,10 @@ struct ProbeClient::Impl {
   uid_t uid = 65534;
   gid_t gid = 65534;
 
+  ForceModel forceModels;  // answered on the probe's fds 5 and 6 when set (serveForces)
+
   std::unique_ptr<SandboxedProcess> process;
+  std::unique_ptr<ForceServer> forceServer;  // of the running probe, when forceModels is set
   int toProbe = -1, fromProbe = -1;
   int starts = 0;
   std::string pastOutput;
@@ -211,6 +265,7 @@ struct ProbeClient::Impl {
     closePipes();
     exit = process->stop();
     process.reset();
+    forceServer.reset();
     keepOutput(exit.output,
                "[a6: probe " + std::to_string(starts) + " " + why + ": " + exit.describe() + "]");
     return exit;
@@ -241,6 +296,18 @@ struct ProbeClient::Impl {
     spec.workDirTmpfsBytes = kWorkDirBytes;
     spec.limits = limits;
     spec.mapFds = {{request[0], kProbeRequestFd}, {answer[1], kProbeAnswerFd}};
+    if (forceModels.spring || forceModels.external) {
+      forceServer = std::make_unique<ForceServer>();
+      if (std::string error; !forceServer->open(error)) {
+        forceServer.reset();
+        ::close(request[0]);
+        ::close(request[1]);
+        ::close(answer[0]);
+        ::close(answer[1]);
+        return error;
+      }
+      for (const auto& fds : forceServer->probeFds()) spec.mapFds.push_back(fds);
+    }
     spec.hide = hide;
     spec.reveal = reveal;
     spec.uid = uid;
@@ -248,6 +315,7 @@ struct ProbeClient::Impl {
     process = std::make_unique<SandboxedProcess>(spec);
     ::close(request[0]);
     ::close(answer[1]);
+    if (forceServer) forceServer->start(forceModels);
     for (const std::string& note : process->notes()) {
       if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(note);
     }
@@ -256,6 +324,7 @@ struct ProbeClient::Impl {
       ::close(request[1]);
       ::close(answer[0]);
       process.reset();
+      forceServer.reset();
       return "could not start the probe: " + error;
     }
     toProbe = request[1];
@@ -414,6 +483,11 @@ void ProbeClient::setUser(uid_t uid, gid_t gid) {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   impl_->uid = uid;
   impl_->gid = gid;
+}
+
+void ProbeClient::serveForces(ForceModel models) {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  impl_->forceModels = std::move(models);
 }
 
 void ProbeClient::setMaxStarts(int starts) {

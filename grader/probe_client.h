@@ -34,6 +34,10 @@ class ProbeClient final : public harness::StudentCode {
   /// paths inside them it must (SandboxSpec::hide, reveal). For the next probe started.
   void setHidden(std::vector<std::filesystem::path> hide,
                  std::vector<std::filesystem::path> reveal = {});
+  /// Force models the grader answers the probe's force requests with (harness/force_channel.h:
+  /// the reference forces of the checks of tasks 3 and 5, which never enter the probe). For the
+  /// next probe started; empty models (the default): the probe uses the student's own forces.
+  void serveForces(ForceModel models);
   /// How many probes may be started in all (default 50).
   void setMaxStarts(int starts);
   /// Who the probe runs as when the grader is root (default nobody). Graders running side by
@@ -67,8 +71,9 @@ class ProbeClient final : public harness::StudentCode {
 
 /// The student's code as two probes built from the same objects (grader/DESIGN.md, "Two
 /// probes"): `plain` answers every request except those that ask for the reference forces (the
-/// steppers of tasks 3 and 5), which `models` answers. So the process that answers tasks 1 and 2
-/// holds no reference model it could call.
+/// steppers of tasks 3 and 5), which `models` answers, asking the grader for each force
+/// (ProbeClient::serveForces). Neither holds a reference model; the probe that answers tasks 1
+/// and 2 cannot even ask for one.
 class ProbePair final : public harness::StudentCode {
  public:
   ProbePair(std::unique_ptr<ProbeClient> plain, std::unique_ptr<ProbeClient> models);

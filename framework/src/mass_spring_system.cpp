@@ -16,8 +16,8 @@ Spring& MassSpringSystem::addSpring(int i, int j, double ks, double kd, SpringTy
   const int n = static_cast<int>(particles.size());
   if (i < 0 || j < 0 || i >= n || j >= n || i == j) {
     throw std::out_of_range("addSpring(" + std::to_string(i) + ", " + std::to_string(j) +
-                            "): needs two different particle indices in [0, " +
-                            std::to_string(n) + ")");
+                            "): needs two different particle indices in [0, " + std::to_string(n) +
+                            ")");
   }
   Spring s;
   s.p1 = &particles[i];
@@ -31,10 +31,16 @@ Spring& MassSpringSystem::addSpring(int i, int j, double ks, double kd, SpringTy
 }
 
 Vec2 MassSpringSystem::externalForce(const Particle& p) const {
+  if (forceModel_.externalAmong) {
+    const ParticlesView all{particles.size(),
+                            [this](std::size_t i) -> const Particle& { return particles[i]; }};
+    return forceModel_.externalAmong(p, all, env);
+  }
   return forceModel_.external ? forceModel_.external(p, env) : a6::externalForce(p, env);
 }
 
 Vec2 MassSpringSystem::springForce(const Spring& s) const {
+  if (forceModel_.springAmong) return forceModel_.springAmong(s, springs);
   return forceModel_.spring ? forceModel_.spring(s) : s.computeForce();
 }
 

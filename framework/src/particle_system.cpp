@@ -14,6 +14,11 @@ int ParticleSystem::emissionCount(double dt) {
 }
 
 Vec2 ParticleSystem::externalForce(const Particle& p) const {
+  if (forceModel_.externalAmong) {
+    const ParticlesView all{particles.size(),
+                            [this](std::size_t i) -> const Particle& { return particles[i]; }};
+    return forceModel_.externalAmong(p, all, env);
+  }
   return forceModel_.external ? forceModel_.external(p, env) : a6::externalForce(p, env);
 }
 

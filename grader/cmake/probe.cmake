@@ -4,19 +4,19 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(SECCOMP REQUIRED IMPORTED_TARGET GLOBAL libseccomp)
 find_package(Threads REQUIRED)
 
-# The harness's plain data as JSON: both ends of the pipe.
-add_library(a6_wire STATIC ${PROJECT_SOURCE_DIR}/framework/harness/wire.cpp)
+# The harness's plain data as JSON, and the reference forces over a pipe: both ends.
+add_library(a6_wire STATIC ${PROJECT_SOURCE_DIR}/framework/harness/wire.cpp
+                           ${PROJECT_SOURCE_DIR}/framework/harness/force_channel.cpp)
 target_link_libraries(a6_wire PUBLIC a6_harness_api nlohmann_json::nlohmann_json)
 target_compile_options(a6_wire PRIVATE ${A6_WARNINGS})
 
-# The probe's main, built twice. a6_probe_main serves every request and holds no reference model;
-# a6_probe_main_models, with the reference force models compiled in (anonymous namespace: student
-# code cannot link against them), is linked into a second probe that serves only the requests of
-# tasks 3 and 5 that ask for the reference forces (grader/DESIGN.md, "Two probes").
+# The probe's main, built twice; neither holds a reference model. a6_probe_main serves every
+# request; a6_probe_main_models is linked into a second probe that serves only the requests of
+# tasks 3 and 5 that ask for the reference forces, which it asks the grader for, force by force,
+# on two more pipes (framework/harness/force_channel.h; grader/DESIGN.md, "Two probes").
 add_library(a6_probe_main OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_main.cpp)
 add_library(a6_probe_main_models OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_main.cpp)
-target_include_directories(a6_probe_main_models PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
-target_compile_definitions(a6_probe_main_models PRIVATE A6_FORCE_MODELS="${A6_FORCE_MODELS}")
+target_compile_definitions(a6_probe_main_models PRIVATE A6_REMOTE_FORCES)
 foreach(main a6_probe_main a6_probe_main_models)
   target_link_libraries(${main} PRIVATE a6_harness_api nlohmann_json::nlohmann_json)
   target_compile_options(${main} PRIVATE ${A6_WARNINGS})
@@ -50,8 +50,8 @@ line=${CMAKE_CXX_COMPILER} -o PROBE ${A6_PROBE_LINK_MAIN} SPRING.o FORCES.o TIME
 ")
 unset(_a6_probe_libs)
 
-# Probes of the solution and of the starter, for the tests: with the reference models, so that
-# one probe answers every request of the suite.
+# Probes of the solution and of the starter, for the tests: the second probe's main, so that one
+# probe answers every request of the suite (the test gives it the reference forces to ask for).
 set(probe_sets starter)
 if(A6_HAVE_SOLUTION)
   list(APPEND probe_sets solution)

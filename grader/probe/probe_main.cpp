@@ -26,16 +26,21 @@
 
 #include "a6/a6.h"
 #include "filter.h"
+#include "harness/force_channel.h"
 #include "harness/student_code.h"
 #include "harness/wire.h"
 #include "scenes/scene.h"
 
 namespace {
-#ifdef A6_FORCE_MODELS
+#ifdef A6_REMOTE_FORCES
 // Only in the second probe (a6_probe_main_models), which serves the requests that ask for the
-// reference forces; the probe that serves every other request holds no model.
-#include A6_FORCE_MODELS  // reference_models.inc, or own_models.inc in a student release
-a6::ForceModel forceModels() { return referenceForceModel(); }
+// reference forces: its force model asks the grader, which holds the models, on fds 5 and 6
+// (harness/force_channel.h). Without those fds (a release's grader, which has no models to
+// give) the student's own forces are used. Neither probe holds a reference model.
+a6::ForceModel forceModels() {
+  return a6::harness::forcechannel::available() ? a6::harness::forcechannel::remoteModel()
+                                                : a6::ForceModel{};
+}
 #else
 a6::ForceModel forceModels() { return {}; }
 #endif

@@ -510,6 +510,16 @@ TEST(Hostile, ReplacesTheFilterFunctions) {
   EXPECT_EQ(readAll(o.dir / "out" / "report.html").find("hostile: READ"), std::string::npos);
 }
 
+// The reference forces stay in the grader, which answers them only to the probe of tasks 3 and
+// 5: the spring that asks for them gets nothing.
+TEST(Hostile, AsksTheGraderForTheReferenceSpringForce) {
+  const Outcome o =
+      checkFixture("ask_reference_forces", Case({1}, "actual:   (nan, nan)").crashes());
+  const std::string report = readAll(o.dir / "out" / "report.html");
+  EXPECT_NE(report.find("hostile: no force channel"), std::string::npos);
+  EXPECT_EQ(report.find("hostile: the grader answered"), std::string::npos);
+}
+
 TEST(Hostile, StartsAThreadBeforeMain) {
   const Outcome o = checkFixture("thread_before_main", {{}, "hostile: no thread before main"});
   const std::string report = readAll(o.dir / "out" / "report.html");
@@ -637,6 +647,7 @@ TEST(Hostile, EveryFixtureHasACase) {
                                         "include_goldens",
                                         "fopen_secrets",
                                         "filter_override",
+                                        "ask_reference_forces",
                                         "thread_before_main",
                                         "ifunc_resolver",
                                         "preinit_entry",

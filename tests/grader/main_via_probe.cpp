@@ -21,6 +21,7 @@
 #include "summary.h"
 
 namespace {
+#include A6_FORCE_MODELS  // the reference forces the probe asks for (harness/force_channel.h)
 std::unique_ptr<a6::grader::ProbeClient> gProbe;
 }  // namespace
 
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   gProbe = std::make_unique<a6::grader::ProbeClient>(
       std::filesystem::absolute(probe), std::filesystem::path(work) / "run", a6::grader::Limits{});
   gProbe->setUser(a6::test::sandboxUid(), 65534);  // ours alone: other tests run beside us
+  gProbe->serveForces(referenceForceModel());
   ::testing::UnitTest::GetInstance()->listeners().Append(new a6::test::TaskSummary);
   const int status = RUN_ALL_TESTS();
   std::printf("A6-PROBE starts=%d\n", gProbe->starts());

@@ -9,18 +9,33 @@
 // externalForce (and ParticleSystem::externalForce) from your steppers and you get this for free.
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <vector>
 
 #include "a6/forces.h"
 #include "a6/spring.h"
 
 namespace a6 {
 
+/// The particles of a system, whichever container holds them.
+struct ParticlesView {
+  std::size_t count = 0;
+  std::function<const Particle&(std::size_t)> at;
+};
+
 struct ForceModel {
   /// Replaces externalForce(p, env) when set.
   std::function<Vec2(const Particle&, const Environment&)> external;
   /// Replaces spring.computeForce() when set.
   std::function<Vec2(const Spring&)> spring;
+  /// For a model that is cheaper asked about many forces at once than one at a time (the
+  /// graders' reference models, which are in another process): the force of `s`, one of the
+  /// system's `springs`. The systems use it, when set, for their own springs.
+  std::function<Vec2(const Spring& s, const std::vector<Spring>& springs)> springAmong;
+  /// Likewise: the external force on `p`, one of the system's particles `all`.
+  std::function<Vec2(const Particle& p, const ParticlesView& all, const Environment& env)>
+      externalAmong;
 };
 
 }  // namespace a6
