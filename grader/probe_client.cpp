@@ -16,6 +16,7 @@
 #include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -201,14 +202,20 @@ class ForceServer {
             {answers_[0], harness::forcechannel::kAnswerFd}};
   }
   /// Once the probe has its ends: closes ours of them and starts answering with `models`.
-  void start(const ForceModel& models) {
+  /// False when no thread could be started.
+  bool start(const ForceModel& models) {
     closeFd(requests_[1]);
     closeFd(answers_[0]);
-    thread_ = std::thread([this, models] {
-      harness::forcechannel::serve(requests_[0], answers_[1], stop_[0], models);
-      closeFd(requests_[0]);  // a probe still waiting for an answer reads the end, not nothing
-      closeFd(answers_[1]);
-    });
+    try {
+      thread_ = std::thread([this, models] {
+        harness::forcechannel::serve(requests_[0], answers_[1], stop_[0], models);
+        closeFd(requests_[0]);  // a probe still waiting for an answer reads the end, not nothing
+        closeFd(answers_[1]);
+      });
+    } catch (const std::system_error&) {
+      return false;
+    }
+    return true;
   }
 
  private:
@@ -315,12 +322,13 @@ struct ProbeClient::Impl {
     process = std::make_unique<SandboxedProcess>(spec);
     ::close(request[0]);
     ::close(answer[1]);
-    if (forceServer) forceServer->start(forceModels);
+    const bool served = !forceServer || forceServer->start(forceModels);
     for (const std::string& note : process->notes()) {
       if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(note);
     }
-    if (!process->error().empty()) {
-      const std::string error = process->error();
+    if (!process->error().empty() || !served) {
+      const std::string error =
+          served ? process->error() : "no thread could be started to answer its forces";
       ::close(request[1]);
       ::close(answer[0]);
       process.reset();

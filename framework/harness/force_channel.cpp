@@ -13,6 +13,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -140,6 +141,8 @@ bool answer(const std::vector<double>& r, const ForceModel& models, std::vector<
     Environment env;
     const std::size_t length = readEnvironment(r, 2, env);
     if (length == 0 || r.size() != 2 + length + count * kParticleWidth) return false;
+    // Each force looks at every obstacle: bound the grader's work for one request.
+    if (count * (1 + env.planes.size() + env.circles.size()) > kMaxRequestDoubles) return false;
     for (std::size_t i = 0; i < count; ++i) {
       out.push_back(externalForce(r.data() + 2 + length + i * kParticleWidth, env, models));
     }
@@ -190,22 +193,23 @@ bool ask(int requestFd, int answerFd, const std::vector<double>& request, std::s
   return true;
 }
 
-// What the grader last answered for all of a system's springs (or particles), with the inputs it
-// answered for: a force whose inputs did not change since is taken from here, so a stepper that
-// asks for every force of one state costs one round trip.
-struct Batch {
-  std::unordered_map<const void*, std::size_t> index;  // item -> its place
-  std::vector<double> inputs;                          // `width` doubles an item
-  std::vector<double> env;                             // externals: the environment asked with
-  std::vector<Vec2> forces;
+// The bytes of `n` doubles, as a key: equal keys are equal inputs, bit for bit (NaN and -0.0
+// included), and so equal forces.
+std::string bytesOf(const double* d, std::size_t n) {
+  return std::string(reinterpret_cast<const char*>(d), n * sizeof(double));
+}
 
-  const Vec2* find(const void* item, const std::vector<double>& in, std::size_t width) const {
-    const auto it = index.find(item);
-    if (it == index.end()) return nullptr;
-    if (std::memcmp(&inputs[it->second * width], in.data(), width * sizeof(double)) != 0) {
-      return nullptr;
-    }
-    return &forces[it->second];
+// What the grader last answered for all of a system's springs (or particles), keyed by the
+// inputs it answered for: a force whose inputs are among them is taken from here, so a stepper
+// that asks for every force of one state costs one round trip, whether it passes the system's
+// own springs or copies of them, in any order.
+struct Batch {
+  std::unordered_map<std::string, Vec2> forces;  // inputs -> force
+  std::string env;                               // externals: the environment asked with
+
+  const Vec2* find(const std::string& key) const {
+    const auto it = forces.find(key);
+    return it == forces.end() ? nullptr : &it->second;
   }
 };
 
@@ -220,6 +224,7 @@ class Remote {
   }
 
   Vec2 external(const Particle& p, const Environment& env) {
+    if (env.planes.size() + env.circles.size() > kMaxObstacles) return notAvailable();
     std::vector<double> r{kExternal};
     putParticle(r, p);
     putEnvironment(r, env);
@@ -229,28 +234,32 @@ class Remote {
   Vec2 springAmong(const Spring& s, const std::vector<Spring>& all) {
     key_.clear();
     putSpring(key_, s);
-    if (const Vec2* f = springs_.find(&s, key_, kSpringWidth)) return *f;
+    const std::string key = bytesOf(key_.data(), key_.size());
+    if (const Vec2* f = springs_.find(key)) return *f;
     std::vector<double> r{kSprings, static_cast<double>(all.size())};
     for (const Spring& each : all) putSpring(r, each);
-    refresh(springs_, r, 2, all.size(), [&](std::size_t i) { return &all[i]; });
-    if (const Vec2* f = springs_.find(&s, key_, kSpringWidth)) return *f;
-    return spring(s);  // not one of the system's springs (a copy)
+    refresh(springs_, r, 2, kSpringWidth, all.size());
+    if (const Vec2* f = springs_.find(key)) return *f;
+    return spring(s);  // not like any of the system's springs
   }
 
   Vec2 externalAmong(const Particle& p, const ParticlesView& all, const Environment& env) {
+    if (env.planes.size() + env.circles.size() > kMaxObstacles) return notAvailable();
     key_.clear();
     putParticle(key_, p);
+    const std::string key = bytesOf(key_.data(), key_.size());
     env_.clear();
     putEnvironment(env_, env);
-    if (env_ == externals_.env) {
-      if (const Vec2* f = externals_.find(&p, key_, kParticleWidth)) return *f;
+    const std::string envKey = bytesOf(env_.data(), env_.size());
+    if (envKey == externals_.env) {
+      if (const Vec2* f = externals_.find(key)) return *f;
     }
     std::vector<double> r{kExternals, static_cast<double>(all.count)};
     r.insert(r.end(), env_.begin(), env_.end());
     for (std::size_t i = 0; i < all.count; ++i) putParticle(r, all.at(i));
-    refresh(externals_, r, 2 + env_.size(), all.count, [&](std::size_t i) { return &all.at(i); });
-    externals_.env = env_;
-    if (const Vec2* f = externals_.find(&p, key_, kParticleWidth)) return *f;
+    refresh(externals_, r, 2 + env_.size(), kParticleWidth, all.count);
+    externals_.env = envKey;
+    if (const Vec2* f = externals_.find(key)) return *f;
     return external(p, env);
   }
 
@@ -260,17 +269,17 @@ class Remote {
     return ask(requestFd_, answerFd_, request, 1, out) ? out[0] : notAvailable();
   }
 
-  // Asks `request` (items from `first` on) and keeps the answers in `batch`; on failure it is
-  // left empty (every force then asked for alone).
-  template <typename ItemOf>
+  // Asks `request` (`count` items of `width` doubles from `first` on) and keeps the answers in
+  // `batch`; on failure it is left empty (every force then asked for alone).
   void refresh(Batch& batch, const std::vector<double>& request, std::size_t first,
-               std::size_t count, ItemOf itemOf) {
-    batch.index.clear();
-    batch.inputs.clear();
+               std::size_t width, std::size_t count) {
+    batch.forces.clear();
     batch.env.clear();
-    if (!ask(requestFd_, answerFd_, request, count, batch.forces)) return;
-    batch.inputs.assign(request.begin() + static_cast<std::ptrdiff_t>(first), request.end());
-    for (std::size_t i = 0; i < count; ++i) batch.index.emplace(itemOf(i), i);
+    std::vector<Vec2> forces;
+    if (!ask(requestFd_, answerFd_, request, count, forces)) return;
+    for (std::size_t i = 0; i < count; ++i) {
+      batch.forces.emplace(bytesOf(request.data() + first + i * width, width), forces[i]);
+    }
   }
 
   int requestFd_, answerFd_;

@@ -198,8 +198,15 @@ TEST_F(BuildProbe, TheSolutionBuildsAndLinksIntoAProbe) {
   const Build one = buildProbe(*kit_, in, root_ / "work1" / "build", defaultCompileLimits(), 1);
   expectLinkedWithOthersCompiled(one, "");
   std::cout << "[ timing ] 1 job: " << one.seconds << " s in all; per file:";
-  for (const TaskBuild& t : one.tasks) std::cout << " " << t.file << " " << t.seconds;
+  double oneByOne = 0;
+  for (const TaskBuild& t : one.tasks) {
+    std::cout << " " << t.file << " " << t.seconds;
+    oneByOne += t.seconds;
+  }
   std::cout << "\n";
+  // --jobs 1 is honoured: one compile at a time, so the compiles' times add up to no more than
+  // the build's (two at once would add up to more, however loaded the machine).
+  EXPECT_LE(oneByOne, one.seconds - one.linkSeconds + 0.05) << describe(one);
 }
 
 TEST_F(BuildProbe, ACompileErrorCostsOnlyItsTask) {

@@ -116,16 +116,22 @@ TEST(ForceChannel, AnswersAreTheModelsBitForBitAndOneStateCostsOneRequest) {
     EXPECT_TRUE(same(remote.external(p, env), referenceExternalForce(p, env)));
     EXPECT_TRUE(same(remote.externalAmong(p, chain.view(), env), referenceExternalForce(p, env)));
   }
-  // A new state: one more batch of each; a spring that is not the system's: asked alone.
+  // A new state: one more batch; copies of the springs (a stepper looping by value), in reverse
+  // order, cost nothing more; a spring like none of the system's: a batch, then asked alone.
   chain.particles[2].x.x() += 0.01;
   for (const a6::Spring& s : chain.springs) {
     EXPECT_TRUE(same(remote.springAmong(s, chain.springs), referenceSpringForce(s)));
   }
-  const a6::Spring copy = chain.springs[0];
-  EXPECT_TRUE(same(remote.springAmong(copy, chain.springs), referenceSpringForce(copy)));
+  for (auto it = chain.springs.rbegin(); it != chain.springs.rend(); ++it) {
+    const a6::Spring copy = *it;
+    EXPECT_TRUE(same(remote.springAmong(copy, chain.springs), referenceSpringForce(copy)));
+  }
+  a6::Spring other = chain.springs[0];
+  other.restLength = 0.5;
+  EXPECT_TRUE(same(remote.springAmong(other, chain.springs), referenceSpringForce(other)));
   channel.stop();
   // 5 + 6 single requests, one batch of springs and one of particles, a second batch of springs,
-  // and the copy: asked in a batch (it is not among them) and then alone.
+  // and the other spring: a batch (it is not among them), then alone.
   EXPECT_EQ(channel.answered(), std::optional<std::size_t>(5 + 6 + 1 + 1 + 1 + 2));
 }
 
@@ -146,7 +152,7 @@ TEST(ForceChannel, NaNAndInfinitiesTravelAsTheyAre) {
 // (answering nothing) and never crashes, hangs or allocates what a count announces.
 TEST(ForceChannel, AMalformedRequestEndsTheServing) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<std::vector<double>> malformed = {
+  std::vector<std::vector<double>> malformed = {
       {0},                                                     // an unknown kind
       {1, 0, 0},                                               // a spring too short
       {2, 0, 0, 0, 0, 1, 300},                                 // a particle without its environment
@@ -158,6 +164,11 @@ TEST(ForceChannel, AMalformedRequestEndsTheServing) {
       {3, 1e18},                                                  // a batch beyond any limit
       {4, 1, 0, -9.81, 293, 0, 0, 0, 0, 0},                       // a particle announced, none
   };
+  // Forces enough, against obstacles enough, to keep the grader busy for seconds: refused.
+  std::vector<double> busy = {4, 2048, 0, -9.81, 293, 0, 0, 0, 1024, 0};
+  for (int k = 0; k < 1024; ++k) busy.insert(busy.end(), {0, 1, -1.0 * k});
+  busy.resize(busy.size() + 2048 * 6, 0.5);
+  malformed.push_back(busy);
   for (const std::vector<double>& request : malformed) {
     Channel channel;
     channel.serve(referenceForceModel());
@@ -183,7 +194,7 @@ TEST(ForceChannel, AHalfWrittenRequestDoesNotHoldTheGraderOnceStopped) {
 }
 
 TEST(ForceChannel, WithTheGraderGoneAForceIsNaNNotACrash) {
-  std::signal(SIGPIPE, SIG_IGN);  // the probe's writes then fail with EPIPE
+  std::signal(SIGPIPE, SIG_IGN);  // as the probe does: its writes then fail with EPIPE
   int requests[2], answers[2];
   ASSERT_EQ(pipe(requests), 0);
   ASSERT_EQ(pipe(answers), 0);
@@ -196,6 +207,21 @@ TEST(ForceChannel, WithTheGraderGoneAForceIsNaNNotACrash) {
   EXPECT_TRUE(remote.externalAmong(chain.particles[0], chain.view(), environment()).hasNaN());
   ::close(requests[1]);
   ::close(answers[0]);
+}
+
+TEST(ForceChannel, AnEnvironmentOverTheLimitIsNaNWithoutAsking) {
+  Channel channel;
+  channel.serve(referenceForceModel());
+  Chain chain;
+  a6::Environment env = environment();
+  env.planes.resize(fc::kMaxObstacles);
+  EXPECT_TRUE(channel.remote().external(chain.particles[0], env).hasNaN());
+  EXPECT_TRUE(channel.remote().externalAmong(chain.particles[0], chain.view(), env).hasNaN());
+  env.planes.resize(fc::kMaxObstacles - 1);  // with the circle: at the limit
+  EXPECT_TRUE(same(channel.remote().external(chain.particles[0], env),
+                   referenceExternalForce(chain.particles[0], env)));
+  channel.stop();
+  EXPECT_EQ(channel.answered(), std::optional<std::size_t>(1));
 }
 
 }  // namespace
