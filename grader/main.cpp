@@ -116,9 +116,17 @@ class BudgetedStudent final : public harness::StudentCode {
                                     std::chrono::duration<double>(seconds));
   }
 
-  /// A new check starts: its requests share `seconds` of wall-clock time.
+  /// Counts the forces the grader answered the probe (ProbePair::forceAnswers): a check gets
+  /// forceWaitAllowance for them on top of its time limit.
+  void setForceAnswers(std::function<std::size_t()> forceAnswers) {
+    forceAnswers_ = std::move(forceAnswers);
+  }
+
+  /// A new check starts: its requests share `seconds` of wall-clock time (plus the allowance for
+  /// the forces the grader answers meanwhile).
   void startTest(double seconds) {
     limit_ = seconds;
+    answersAtStart_ = forceAnswers_ ? forceAnswers_() : 0;
     deadline_ = Clock::now() +
                 std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
     lastFailure_.clear();
@@ -166,7 +174,13 @@ class BudgetedStudent final : public harness::StudentCode {
       result.error = out.str();
       return result;
     }
-    double remaining = std::chrono::duration<double>(deadline_ - Clock::now()).count();
+#ifdef A6_GRADE_HAVE_PROBE
+    const double allowance =
+        forceAnswers_ ? forceWaitAllowance(forceAnswers_() - answersAtStart_, limit_) : 0;
+#else
+    const double allowance = 0;
+#endif
+    double remaining = std::chrono::duration<double>(deadline_ - Clock::now()).count() + allowance;
     if (remaining < 0.01) {
       std::ostringstream out;
       out << "this check's time limit of " << limit_
@@ -207,6 +221,8 @@ class BudgetedStudent final : public harness::StudentCode {
   std::string startError_;
   double limit_ = kDefaultTimeLimit;
   Clock::time_point deadline_ = Clock::now();
+  std::function<std::size_t()> forceAnswers_;
+  std::size_t answersAtStart_ = 0;
   double budget_ = kDefaultTimeBudget;
   Clock::time_point budgetEnd_ = Clock::time_point::max();
 };
@@ -643,6 +659,7 @@ int grade(const Options& options, const Rubric& rubric) {
   std::unique_ptr<harness::StudentCode> probe;
   std::function<void(double)> setTimeout;
   std::function<void()> newCheck;
+  std::function<std::size_t()> forceAnswers;
 #ifdef A6_GRADE_HAVE_PROBE
   if (unavailable.empty()) {
     try {
@@ -658,6 +675,7 @@ int grade(const Options& options, const Rubric& rubric) {
       auto pair = std::make_unique<ProbePair>(client(report.build.probe, "run"), std::move(models));
       ProbePair* raw = pair.get();
       setTimeout = [raw](double seconds) { raw->setRequestTimeout(seconds); };
+      forceAnswers = [raw] { return raw->forceAnswers(); };
       newCheck = [raw] { raw->allowMoreStarts(kStartsPerCheck); };
       probe = std::move(pair);
     } catch (const std::exception& e) {
@@ -672,6 +690,7 @@ int grade(const Options& options, const Rubric& rubric) {
   }
 #endif
   BudgetedStudent student(probe.get(), setTimeout, newCheck, unavailable);
+  if (forceAnswers) student.setForceAnswers(forceAnswers);
   student.setTotalBudget(options.timeBudget);
   gStudent = &student;
   int skipped = 0;

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -111,11 +112,26 @@ int msUntil(Clock::time_point deadline) {
   return static_cast<int>(std::clamp<long long>(ms + 1, 0, 1000));
 }
 
+// A request's deadline: its time limit, plus the allowance for the forces the grader answered
+// meanwhile (forceWaitAllowance), so it moves on while those answers come in.
+struct Deadline {
+  Clock::time_point base;
+  double limit = 0;                                   // s
+  const std::atomic<std::size_t>* answers = nullptr;  // the grader's force answers so far
+  std::size_t answersAtStart = 0;
+
+  Clock::time_point at() const {
+    if (answers == nullptr) return base;
+    const double extra = forceWaitAllowance(*answers - answersAtStart, limit);
+    return base + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(extra));
+  }
+};
+
 enum class Io { Ok, Closed, TimedOut, Garbage };
 
 // Writes all of `bytes` to a non-blocking pipe before `deadline`. SIGPIPE is blocked in this
 // thread meanwhile (a probe that died must not kill the grader) and a pending one is consumed.
-Io sendAll(int fd, const std::string& bytes, Clock::time_point deadline) {
+Io sendAll(int fd, const std::string& bytes, const Deadline& deadline) {
   sigset_t pipeSet, old;
   sigemptyset(&pipeSet);
   sigaddset(&pipeSet, SIGPIPE);
@@ -130,12 +146,12 @@ Io sendAll(int fd, const std::string& bytes, Clock::time_point deadline) {
     }
     if (n < 0 && errno == EINTR) continue;
     if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-      if (Clock::now() >= deadline) {
+      if (Clock::now() >= deadline.at()) {
         result = Io::TimedOut;
         break;
       }
       pollfd pfd{fd, POLLOUT, 0};
-      poll(&pfd, 1, msUntil(deadline));
+      poll(&pfd, 1, msUntil(deadline.at()));
       continue;
     }
     result = Io::Closed;  // EPIPE: the probe is gone
@@ -151,7 +167,7 @@ Io sendAll(int fd, const std::string& bytes, Clock::time_point deadline) {
 }
 
 // Appends exactly `n` bytes from a non-blocking pipe to `out` before `deadline`.
-Io receiveExactly(int fd, std::size_t n, std::string& out, Clock::time_point deadline) {
+Io receiveExactly(int fd, std::size_t n, std::string& out, const Deadline& deadline) {
   char buffer[1 << 16];
   std::size_t got = 0;
   while (got < n) {
@@ -164,9 +180,9 @@ Io receiveExactly(int fd, std::size_t n, std::string& out, Clock::time_point dea
     if (k == 0) return Io::Closed;
     if (errno == EINTR) continue;
     if (errno != EAGAIN && errno != EWOULDBLOCK) return Io::Closed;
-    if (Clock::now() >= deadline) return Io::TimedOut;
+    if (Clock::now() >= deadline.at()) return Io::TimedOut;
     pollfd pfd{fd, POLLIN, 0};
-    poll(&pfd, 1, msUntil(deadline));
+    poll(&pfd, 1, msUntil(deadline.at()));
   }
   return Io::Ok;
 }
@@ -203,12 +219,12 @@ class ForceServer {
   }
   /// Once the probe has its ends: closes ours of them and starts answering with `models`.
   /// False when no thread could be started.
-  bool start(const ForceModel& models) {
+  bool start(const ForceModel& models, std::atomic<std::size_t>* answers) {
     closeFd(requests_[1]);
     closeFd(answers_[0]);
     try {
-      thread_ = std::thread([this, models] {
-        harness::forcechannel::serve(requests_[0], answers_[1], stop_[0], models);
+      thread_ = std::thread([this, models, answers] {
+        harness::forcechannel::serve(requests_[0], answers_[1], stop_[0], models, answers);
         closeFd(requests_[0]);  // a probe still waiting for an answer reads the end, not nothing
         closeFd(answers_[1]);
       });
@@ -239,6 +255,7 @@ struct ProbeClient::Impl {
   gid_t gid = 65534;
 
   ForceModel forceModels;  // answered on the probe's fds 5 and 6 when set (serveForces)
+  std::atomic<std::size_t> forceAnswers{0};  // over all the probes started
 
   std::unique_ptr<SandboxedProcess> process;
   std::unique_ptr<ForceServer> forceServer;  // of the running probe, when forceModels is set
@@ -322,7 +339,7 @@ struct ProbeClient::Impl {
     process = std::make_unique<SandboxedProcess>(spec);
     ::close(request[0]);
     ::close(answer[1]);
-    const bool served = !forceServer || forceServer->start(forceModels);
+    const bool served = !forceServer || forceServer->start(forceModels, &forceAnswers);
     for (const std::string& note : process->notes()) {
       if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(note);
     }
@@ -375,7 +392,7 @@ struct ProbeClient::Impl {
 
   // One request's bytes out and one answer's text back, within `deadline`. Returns why not, or
   // "" (the probe is stopped on a time-out, a crash or garbage).
-  std::string exchange(const std::string& bytes, Clock::time_point deadline, std::string& body) {
+  std::string exchange(const std::string& bytes, const Deadline& deadline, std::string& body) {
     auto timedOut = [&] {
       shutdown("ran out of time");
       return "your code took longer than " + seconds(timeout) +
@@ -405,7 +422,7 @@ struct ProbeClient::Impl {
   // A probe just started: it must answer a request that runs no student code, and then show,
   // in /proc, its seccomp filter on top of the sandbox's and a single thread
   // (grader/probe/filter.h). Returns why it cannot serve, or "".
-  std::string verifyStarted(Clock::time_point deadline) {
+  std::string verifyStarted(const Deadline& deadline) {
     harness::SceneRequest ping;
     ping.frames = {-1};
     std::string body;
@@ -439,8 +456,9 @@ struct ProbeClient::Impl {
       return failed;
     }
     checkQuiet();
-    const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                             std::chrono::duration<double>(timeout));
+    const Deadline deadline{Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                               std::chrono::duration<double>(timeout)),
+                            timeout, &forceAnswers, forceAnswers.load()};
     if (!process) {
       if (std::string error = ensureStarted(); !error.empty()) {
         failed.error = error;
@@ -492,6 +510,8 @@ void ProbeClient::setUser(uid_t uid, gid_t gid) {
   impl_->uid = uid;
   impl_->gid = gid;
 }
+
+std::size_t ProbeClient::forceAnswers() const { return impl_->forceAnswers.load(); }
 
 void ProbeClient::serveForces(ForceModel models) {
   std::lock_guard<std::mutex> lock(impl_->mutex);
@@ -602,6 +622,8 @@ std::string ProbePair::output(std::size_t cap) const {
   if (text.size() > cap) text.resize(cap);
   return text;
 }
+
+std::size_t ProbePair::forceAnswers() const { return models_->forceAnswers(); }
 
 int ProbePair::restarts() const {
   return std::max(0, plain_->starts() - 1) + std::max(0, models_->starts() - 1);

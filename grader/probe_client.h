@@ -21,6 +21,18 @@
 
 namespace a6::grader {
 
+/// The wall-clock time a request, and a check, gets on top of its time limit for each force the
+/// grader answered during it (ProbeClient::serveForces): that round trip is the grader's doing,
+/// not the student's code's. About 20 us on an idle machine, milliseconds on a loaded one; the
+/// allowance is 2 ms a force, at most 4 times the limit (so code that asks for forces in an
+/// endless loop still stops).
+constexpr double kForceWaitSeconds = 0.002;
+constexpr double kForceWaitCap = 4;
+inline double forceWaitAllowance(std::size_t answers, double limit) {
+  const double extra = static_cast<double>(answers) * kForceWaitSeconds;
+  return extra < kForceWaitCap * limit ? extra : kForceWaitCap * limit;
+}
+
 class ProbeClient final : public harness::StudentCode {
  public:
   /// `probe`: the linked probe executable; `workRoot`: where fresh working directories go
@@ -38,6 +50,8 @@ class ProbeClient final : public harness::StudentCode {
   /// the reference forces of the checks of tasks 3 and 5, which never enter the probe). For the
   /// next probe started; empty models (the default): the probe uses the student's own forces.
   void serveForces(ForceModel models);
+  /// How many forces the grader has answered this client's probes so far.
+  std::size_t forceAnswers() const;
   /// How many probes may be started in all (default 50).
   void setMaxStarts(int starts);
   /// Who the probe runs as when the grader is root (default nobody). Graders running side by
@@ -92,6 +106,8 @@ class ProbePair final : public harness::StudentCode {
   harness::Box2DResult runBox2D(const harness::Box2DRequest&) override;
   harness::SceneResult runScene(const harness::SceneRequest&) override;
 
+  /// How many forces the grader has answered the probe with the reference forces so far.
+  std::size_t forceAnswers() const;
   /// What both printed (the plain probe's first), capped at `cap` bytes.
   std::string output(std::size_t cap) const;
   /// How often a probe was started again after a crash or a time limit (0 when each was

@@ -26,6 +26,7 @@
 // suffer).
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 
 #include "a6/force_model.h"
@@ -50,6 +51,8 @@ bool available(int requestFd = kRequestFd, int answerFd = kAnswerFd);
 /// The grader's side: answers requests read from `requestFd` with `models` on `answerFd` until
 /// the requests end, one is malformed, or `stopFd` becomes readable (or is closed). Never throws.
 /// Returns how many requests were answered.
-std::size_t serve(int requestFd, int answerFd, int stopFd, const ForceModel& models);
+/// `answered`, when given, counts the answers as they go (the grader's time allowance).
+std::size_t serve(int requestFd, int answerFd, int stopFd, const ForceModel& models,
+                  std::atomic<std::size_t>* answered = nullptr);
 
 }  // namespace a6::harness::forcechannel

@@ -145,6 +145,31 @@ TEST(ProbeClient, TheSolutionsProbeAnswersBitForBitAsInProcess) {
   EXPECT_EQ(probe.starts(), 1) << "one probe served every request";
 }
 
+// The grader's force answers are its own time: a check gets 2 ms a force on top of its limit,
+// never more than four times the limit.
+TEST(ProbeClient, ForcesTheGraderAnswersAddToTheTimeLimitUpToACap) {
+  EXPECT_EQ(forceWaitAllowance(0, 2), 0);
+  EXPECT_DOUBLE_EQ(forceWaitAllowance(500, 2), 1.0);
+  EXPECT_DOUBLE_EQ(forceWaitAllowance(4000, 2), 8.0);
+  EXPECT_DOUBLE_EQ(forceWaitAllowance(std::size_t{1} << 40, 10), 40.0);
+  // The probe of tasks 3 and 5 counts them: a cloth's second of motion is one per step.
+  TempDir tmp;
+  ProbeClient probe(kSolution, tmp.path() / "run", Limits{});
+  probe.setUser(a6::test::sandboxUid(), 65534);
+  probe.serveForces(referenceForceModel());
+  harness::SimulateRequest sim;
+  const harness::ClothResult grid = harness::makeInProcess()->buildCloth(ClothSpec{});
+  ASSERT_TRUE(grid.ok()) << grid.error;
+  sim.particles = grid.particles;
+  sim.springs = grid.springs;
+  sim.frames = 60;
+  sim.substeps = 4;
+  sim.referenceForces = true;
+  ASSERT_TRUE(probe.simulate(sim).ok());
+  // One batch of springs and one of external forces a step (240 steps).
+  EXPECT_EQ(probe.forceAnswers(), 2u * 240u);
+}
+
 TEST(ProbeClient, PerRequestOverheadIsSmall) {
   TempDir tmp;
   ProbeClient probe(kSolution, tmp.path() / "run", Limits{});
