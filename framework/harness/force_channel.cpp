@@ -17,6 +17,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "harness/wire.h"
+
 namespace a6::harness::forcechannel {
 namespace {
 
@@ -151,19 +153,8 @@ bool answer(const std::vector<double>& r, const ForceModel& models, std::vector<
   return false;
 }
 
-// ---- the probe's side: blocking, whole buffers --------------------------------------------------
-
-bool writeAll(int fd, const void* data, std::size_t n) {
-  const char* p = static_cast<const char*>(data);
-  while (n > 0) {
-    const ssize_t k = ::write(fd, p, n);
-    if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) return false;
-    p += k;
-    n -= static_cast<std::size_t>(k);
-  }
-  return true;
-}
+// ---- the probe's side: blocking, whole buffers (writing: wire::writeAll)
+// --------------------------------------------------
 
 bool readAll(int fd, void* data, std::size_t n) {
   char* p = static_cast<char*>(data);
@@ -183,8 +174,9 @@ bool ask(int requestFd, int answerFd, const std::vector<double>& request, std::s
   if (request.size() > kMaxRequestDoubles) return false;
   const auto n = static_cast<std::uint32_t>(request.size());
   std::vector<double> answer(2 * forces);
-  if (!writeAll(requestFd, &n, sizeof n) ||
-      !writeAll(requestFd, request.data(), n * sizeof(double)) ||
+  std::string bytes(reinterpret_cast<const char*>(&n), sizeof n);
+  bytes.append(reinterpret_cast<const char*>(request.data()), n * sizeof(double));
+  if (!wire::writeAll(requestFd, bytes) ||
       !readAll(answerFd, answer.data(), answer.size() * sizeof(double))) {
     return false;
   }
