@@ -2,6 +2,7 @@
 // computed by hand, and its invariants (direction, sign, Newton's third law).
 #include <cmath>
 
+#include "scales.h"
 #include "suite.h"
 
 namespace a6::test {
@@ -22,10 +23,13 @@ harness::SpringForceRequest spring(Vec2 x1, Vec2 x2, double l0, double ks, doubl
 }
 
 std::string input(const harness::SpringForceRequest& r) {
-  std::ostringstream out;
-  out << "input: p1 " << str(r.p1) << ", p2 " << str(r.p2) << ", l0=" << r.restLength
-      << ", ks=" << r.ks << ", kd=" << r.kd;
-  return out.str();
+  return "input: p1 " + str(r.p1) + ", p2 " + str(r.p2) + ", l0=" + num(r.restLength) +
+         ", ks=" + num(r.ks) + ", kd=" + num(r.kd);
+}
+
+// The force's tolerance: relative to ks·max(l, l0) + kd·|Δv| (suite.h).
+Tolerance tol(const harness::SpringForceRequest& r) {
+  return relativeTo(springForceScale(r.p1.x, r.p2.x, r.p1.v, r.p2.v, r.restLength, r.ks, r.kd));
 }
 
 Vec2 forceOf(const harness::SpringForceRequest& r) {
@@ -36,29 +40,31 @@ Vec2 forceOf(const harness::SpringForceRequest& r) {
 
 TEST(Task1Spring, AtRestGivesZeroForce) {
   const auto r = spring(Vec2(0, 0), Vec2(0.6, 0.8), 1.0, 50, 2);
-  EXPECT_VEC_NEAR(forceOf(r), Vec2(0, 0), 1e-12)
+  EXPECT_VEC_NEAR(forceOf(r), Vec2(0, 0), tol(r))
       << input(r) << hint("at l = l0 with no relative motion the spring is relaxed: f = 0");
 }
 
 TEST(Task1Spring, StretchedPullsP2TowardsP1) {
   // l = 2, l0 = 1, ks = 10: |f| = 10, along -e = (-1, 0).
   const auto r = spring(Vec2(0, 0), Vec2(2, 0), 1.0, 10, 0);
-  EXPECT_VEC_NEAR(forceOf(r), Vec2(-10, 0), 1e-12)
+  EXPECT_VEC_NEAR(forceOf(r), Vec2(-10, 0), tol(r))
       << input(r) << hint("the spring pulls p2 back towards p1: check the sign of -ks (l - l0) e");
 }
 
 TEST(Task1Spring, CompressedPushesP2Away) {
   // l = 0.5, l0 = 1, ks = 10: f = -10 (0.5 - 1) e = 5 e with e = (0, 1).
   const auto r = spring(Vec2(1, 1), Vec2(1, 1.5), 1.0, 10, 0);
-  EXPECT_VEC_NEAR(forceOf(r), Vec2(0, 5), 1e-12)
-      << input(r) << hint("a compressed spring pushes p2 away from p1: f = -ks (l - l0) e with l < l0");
+  EXPECT_VEC_NEAR(forceOf(r), Vec2(0, 5), tol(r))
+      << input(r)
+      << hint("a compressed spring pushes p2 away from p1: f = -ks (l - l0) e with l < l0");
 }
 
 TEST(Task1Spring, DiagonalMatchesHandComputedValue) {
   // d = (3, 4), l = 5, e = (0.6, 0.8), l0 = 2, ks = 7: f = -7 * 3 * e = (-12.6, -16.8).
   const auto r = spring(Vec2(1, -1), Vec2(4, 3), 2.0, 7, 0);
-  EXPECT_VEC_NEAR(forceOf(r), Vec2(-12.6, -16.8), 1e-9)
-      << input(r) << hint("e = d / |d| with d = x2 - x1; the force is along e, its size ks |l - l0|");
+  EXPECT_VEC_NEAR(forceOf(r), Vec2(-12.6, -16.8), tol(r))
+      << input(r)
+      << hint("e = d / |d| with d = x2 - x1; the force is along e, its size ks |l - l0|");
 }
 
 TEST(Task1Spring, FormulaHoldsInEveryDirection) {
@@ -68,8 +74,9 @@ TEST(Task1Spring, FormulaHoldsInEveryDirection) {
     const Vec2 e(std::cos(angle), std::sin(angle));
     for (double l : {0.3, 0.7, 1.9}) {
       const auto r = spring(Vec2(0.25, -0.5), Vec2(0.25, -0.5) + l * e, l0, ks, 0);
-      EXPECT_VEC_NEAR(forceOf(r), -ks * (l - l0) * e, 1e-9)
-          << input(r) << hint("the force must follow the spring's direction e = d/|d| whatever its angle");
+      EXPECT_VEC_NEAR(forceOf(r), -ks * (l - l0) * e, tol(r))
+          << input(r)
+          << hint("the force must follow the spring's direction e = d/|d| whatever its angle");
     }
   }
 }
@@ -77,71 +84,91 @@ TEST(Task1Spring, FormulaHoldsInEveryDirection) {
 TEST(Task1Spring, ForceScalesWithStiffness) {
   const auto soft = spring(Vec2(0, 0), Vec2(0, 1.5), 1.0, 10, 0);
   const auto stiff = spring(Vec2(0, 0), Vec2(0, 1.5), 1.0, 30, 0);
-  EXPECT_VEC_NEAR(forceOf(stiff), 3.0 * forceOf(soft), 1e-9)
+  EXPECT_VEC_NEAR(forceOf(stiff), 3.0 * forceOf(soft), tol(stiff))
       << input(stiff) << hint("the force is proportional to ks");
 }
 
 TEST(Task1Spring, DampingOpposesSeparation) {
   // At rest length, p2 moving away along e at 2 m/s, kd = 3: f = -3 * 2 * e = (-6, 0).
   const auto r = spring(Vec2(0, 0), Vec2(1, 0), 1.0, 100, 3, Vec2(0, 0), Vec2(2, 0));
-  EXPECT_VEC_NEAR(forceOf(r), Vec2(-6, 0), 1e-12)
+  EXPECT_VEC_NEAR(forceOf(r), Vec2(-6, 0), tol(r))
       << input(r) << hint("damping: -kd v_rel e with v_rel = (v2 - v1)·e; it slows the separation");
 }
 
 TEST(Task1Spring, DampingUsesRelativeVelocity) {
   // Both particles move together: no relative motion, no damping force.
   const auto r = spring(Vec2(0, 0), Vec2(1, 0), 1.0, 100, 3, Vec2(5, -2), Vec2(5, -2));
-  EXPECT_VEC_NEAR(forceOf(r), Vec2(0, 0), 1e-12)
-      << input(r) << hint("damping depends on v2 - v1, not on v2 alone: a spring moving rigidly feels no damping");
+  EXPECT_VEC_NEAR(forceOf(r), Vec2(0, 0), tol(r))
+      << input(r)
+      << hint(
+             "damping depends on v2 - v1, not on v2 alone: a spring moving rigidly feels no "
+             "damping");
 }
 
 TEST(Task1Spring, DampingFollowsTheFirstParticleToo) {
   // At rest length, p1 moving away from p2 at 2 m/s while p2 stays: e = (1, 0), v1 = (-2, 0),
   // v_rel = (v2 - v1)·e = 2, so f = -3 * 2 * e = (-6, 0).
   const auto r = spring(Vec2(0, 0), Vec2(1, 0), 1.0, 100, 3, Vec2(-2, 0), Vec2(0, 0));
-  EXPECT_VEC_NEAR(forceOf(r), Vec2(-6, 0), 1e-12)
+  EXPECT_VEC_NEAR(forceOf(r), Vec2(-6, 0), tol(r))
       << input(r) << hint("v_rel = (v2 - v1)·e: when p1 moves away, the spring is separating too");
 }
 
 TEST(Task1Spring, DampingActsOnlyAlongTheSpring) {
   // p2 moves perpendicular to the spring: v_rel = 0, so no force at all.
   const auto r = spring(Vec2(0, 0), Vec2(1, 0), 1.0, 100, 3, Vec2(0, 0), Vec2(0, 4));
-  EXPECT_VEC_NEAR(forceOf(r), Vec2(0, 0), 1e-12)
-      << input(r) << hint("project the relative velocity on e first: -kd ((v2 - v1)·e) e, not -kd (v2 - v1)");
+  EXPECT_VEC_NEAR(forceOf(r), Vec2(0, 0), tol(r))
+      << input(r)
+      << hint("project the relative velocity on e first: -kd ((v2 - v1)·e) e, not -kd (v2 - v1)");
 }
 
 TEST(Task1Spring, StiffnessAndDampingAddUp) {
   // d = (0, 2), e = (0, 1), l0 = 1.5, ks = 4, kd = 0.5, v_rel = (1, -3)·e = -3:
   // f = -4 * 0.5 e - 0.5 * (-3) e = (-2 + 1.5) e = (0, -0.5).
   const auto r = spring(Vec2(2, 0), Vec2(2, 2), 1.5, 4, 0.5, Vec2(0, 0), Vec2(1, -3));
-  EXPECT_VEC_NEAR(forceOf(r), Vec2(0, -0.5), 1e-12)
+  EXPECT_VEC_NEAR(forceOf(r), Vec2(0, -0.5), tol(r))
       << input(r) << hint("f2 = -ks (l - l0) e - kd v_rel e: both terms, both along e");
 }
 
 TEST(Task1Spring, ForceIsAlongTheSpring) {
-  const auto r = spring(Vec2(0.1, 0.2), Vec2(1.3, -0.4), 0.5, 20, 1.5, Vec2(0.3, 0.7), Vec2(-1.1, 2.0));
+  const auto r =
+      spring(Vec2(0.1, 0.2), Vec2(1.3, -0.4), 0.5, 20, 1.5, Vec2(0.3, 0.7), Vec2(-1.1, 2.0));
   const Vec2 f = forceOf(r);
   const Vec2 d = r.p2.x - r.p1.x;
-  EXPECT_CLOSE(d.x() * f.y() - d.y() * f.x(), 0.0, 1e-9)
+  // The cross product d × f, of size |d| |f|: zero when f is along d.
+  EXPECT_CLOSE(d.x() * f.y() - d.y() * f.x(), 0.0,
+               relativeTo(d.norm() * springForceScale(r.p1.x, r.p2.x, r.p1.v, r.p2.v, r.restLength,
+                                                      r.ks, r.kd)))
       << input(r) << ", force " << str(f)
       << hint("a spring force (with its damping) is always parallel to d = x2 - x1");
 }
 
 TEST(Task1Spring, NewtonsThirdLaw) {
   // Swapping the particles gives the force on the other one: it must be the opposite.
-  const auto r = spring(Vec2(0.1, 0.2), Vec2(1.3, -0.4), 0.5, 20, 1.5, Vec2(0.3, 0.7), Vec2(-1.1, 2.0));
+  const auto r =
+      spring(Vec2(0.1, 0.2), Vec2(1.3, -0.4), 0.5, 20, 1.5, Vec2(0.3, 0.7), Vec2(-1.1, 2.0));
   auto swapped = r;
   std::swap(swapped.p1, swapped.p2);
-  EXPECT_VEC_NEAR(forceOf(swapped), -forceOf(r), 1e-9)
+  EXPECT_VEC_NEAR(forceOf(swapped), -forceOf(r), tol(r))
       << input(r) << hint("the force on p1 is -f2: swapping p1 and p2 must flip the force");
 }
 
+// Worth points: most springs divide by l = 0 here, and a NaN force spreads to every particle of
+// a cloth in one step. The ordinary spring beside it keeps a stub that returns zero from passing;
+// any guard up to 1 mm is right (no other check has a spring that short).
 TEST(Task1Spring, CoincidentParticlesGiveZeroNotNaN) {
+  const auto ordinary = spring(Vec2(0.5, 0.5), Vec2(2.5, 0.5), 1.0, 10, 0);
+  EXPECT_VEC_NEAR(forceOf(ordinary), Vec2(-10, 0), tol(ordinary))
+      << input(ordinary) << hint("an ordinary stretched spring pulls p2 back: -ks (l - l0) e");
   const auto r = spring(Vec2(0.5, 0.5), Vec2(0.5, 0.5), 1.0, 10, 1, Vec2(0, 1), Vec2(1, 0));
   const Vec2 f = forceOf(r);
   EXPECT_TRUE(finite(f)) << currentTask() << ": force " << str(f) << " for " << input(r)
-                         << hint("l = 0 makes e = d / l divide by zero: return zero when l < 1e-12");
-  EXPECT_VEC_NEAR(f, Vec2(0, 0), 1e-12) << input(r) << hint("coincident particles give zero force");
+                         << hint(
+                                "l = 0 makes e = d / l divide by zero: return zero when l is tiny "
+                                "(below 1e-12, or 1 mm)");
+  if (finite(f)) {
+    EXPECT_VEC_NEAR(f, Vec2(0, 0), tol(r))
+        << input(r) << hint("coincident particles give zero force");
+  }
 }
 
 TEST(Task1Spring, DoesNotChangeTheParticles) {
@@ -150,8 +177,9 @@ TEST(Task1Spring, DoesNotChangeTheParticles) {
   const auto r = spring(Vec2(0, 0), Vec2(2, 0), 1.0, 10, 1, Vec2(0, 0), Vec2(1, 0));
   const Vec2 first = forceOf(r);
   const Vec2 second = forceOf(r);
-  EXPECT_VEC_NEAR(second, first, 0.0)
-      << input(r) << hint("the same spring must give the same force every time: keep no state between calls");
+  EXPECT_VEC_NEAR(second, first, relativeTo(tol(r).scale, 0))
+      << input(r)
+      << hint("the same spring must give the same force every time: keep no state between calls");
 }
 
 }  // namespace

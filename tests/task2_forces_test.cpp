@@ -3,6 +3,7 @@
 // (with the contacts measured by the framework's contactWith, as the student's code must).
 #include <cmath>
 
+#include "scales.h"
 #include "suite.h"
 
 namespace a6::test {
@@ -30,20 +31,24 @@ Environment quiet() {
 }
 
 std::string input(const harness::ForcesRequest& r) {
-  std::ostringstream out;
   const Particle& p = r.particle;
   const Environment& env = r.env;
-  out << "input: particle " << str(p) << " T=" << p.temperature << "; env g=" << str(env.gravity)
-      << ", T_air=" << env.airTemperature << ", b=" << env.buoyancy << ", k_d=" << env.drag
-      << ", k_r=" << env.repulsion;
+  std::string out = "input: particle " + str(p) + " T=" + num(p.temperature) +
+                    "; env g=" + str(env.gravity) + ", T_air=" + num(env.airTemperature) +
+                    ", b=" + num(env.buoyancy) + ", k_d=" + num(env.drag) +
+                    ", k_r=" + num(env.repulsion);
   for (const HalfPlane& plane : env.planes) {
-    out << ", half-plane{n=" << str(plane.normal) << ", offset=" << plane.offset << "}";
+    out += ", half-plane{n=" + str(plane.normal) + ", offset=" + num(plane.offset) + "}";
   }
   for (const CircleObstacle& c : env.circles) {
-    out << ", circle{c=" << str(c.center) << ", r=" << c.radius << "}";
+    out += ", circle{c=" + str(c.center) + ", r=" + num(c.radius) + "}";
   }
-  out << "; contact{depth=" << r.contact.depth << ", n=" << str(r.contact.normal) << "}";
-  return out.str();
+  return out + "; contact{depth=" + num(r.contact.depth) + ", n=" + str(r.contact.normal) + "}";
+}
+
+// A force's tolerance: relative to the scale of everything that acts on the particle (scales.h).
+Tolerance tol(const harness::ForcesRequest& r) {
+  return relativeTo(externalForceScale(r.particle, r.env, r.contact.depth));
 }
 
 harness::ForcesResult forcesOf(const harness::ForcesRequest& r) {
@@ -83,7 +88,7 @@ TEST(Task2Forces, GravityIsMassTimesG) {
   Environment env = quiet();
   env.gravity = Vec2(0, -9.81);
   const auto r = request(particle(Vec2(0.3, 0.4), Vec2::Zero(), 2.5), env);
-  EXPECT_VEC_NEAR(forcesOf(r).gravity, Vec2(0, -24.525), 1e-12)
+  EXPECT_VEC_NEAR(forcesOf(r).gravity, Vec2(0, -24.525), tol(r))
       << input(r) << hint("gravity is a force, m g: multiply g by the particle's mass p.m");
 }
 
@@ -94,9 +99,9 @@ TEST(Task2Forces, GravityIsProportionalToMass) {
   const auto heavy = request(particle(Vec2(0, 0), Vec2::Zero(), 5.0), env);
   const Vec2 fLight = forcesOf(light).gravity;
   const Vec2 fHeavy = forcesOf(heavy).gravity;
-  EXPECT_VEC_NEAR(fLight, Vec2(0.1, -1.962), 1e-12)
+  EXPECT_VEC_NEAR(fLight, Vec2(0.1, -1.962), tol(light))
       << input(light) << hint("gravity is m g, with the particle's own mass");
-  EXPECT_VEC_NEAR(fHeavy, 25.0 * fLight, 1e-9)
+  EXPECT_VEC_NEAR(fHeavy, 25.0 * fLight, tol(heavy))
       << input(heavy) << " vs. " << input(light)
       << hint("a 25 times heavier particle feels a 25 times larger gravity force: f = m g");
 }
@@ -107,7 +112,7 @@ TEST(Task2Forces, GravityFollowsGInAnyDirection) {
     Environment env = quiet();
     env.gravity = 3.7 * Vec2(std::cos(angle), std::sin(angle));
     const auto r = request(particle(Vec2(1, -2), Vec2(0.5, 0.5), 1.7), env);
-    EXPECT_VEC_NEAR(forcesOf(r).gravity, 1.7 * env.gravity, 1e-9)
+    EXPECT_VEC_NEAR(forcesOf(r).gravity, 1.7 * env.gravity, tol(r))
         << input(r) << hint("use the whole vector g (both components), not just its y component");
     if (HasFailure()) break;  // the first failure says enough
   }
@@ -121,7 +126,7 @@ TEST(Task2Forces, HotParticlesRise) {
   env.buoyancy = 0.02;
   env.airTemperature = 300;
   const auto r = request(particle(Vec2(0, 0), Vec2::Zero(), 3.0, 400), env);
-  EXPECT_VEC_NEAR(forcesOf(r).buoyancy, Vec2(0, 2), 1e-12)
+  EXPECT_VEC_NEAR(forcesOf(r).buoyancy, Vec2(0, 2), tol(r))
       << input(r)
       << hint(
              "buoyancy is b (T - T_air) (0, 1): a particle hotter than the air is "
@@ -134,7 +139,7 @@ TEST(Task2Forces, ColdParticlesSink) {
   env.buoyancy = 0.02;
   env.airTemperature = 300;
   const auto r = request(particle(Vec2(0, 0), Vec2::Zero(), 1.0, 250), env);
-  EXPECT_VEC_NEAR(forcesOf(r).buoyancy, Vec2(0, -1), 1e-12)
+  EXPECT_VEC_NEAR(forcesOf(r).buoyancy, Vec2(0, -1), tol(r))
       << input(r)
       << hint(
              "b (T - T_air) (0, 1) keeps its sign: colder than the air means a "
@@ -146,7 +151,7 @@ TEST(Task2Forces, NoBuoyancyAtAirTemperature) {
   env.buoyancy = 0.05;
   env.airTemperature = 350;
   const auto r = request(particle(Vec2(0, 0), Vec2(1, 1), 2.0, 350), env);
-  EXPECT_VEC_NEAR(forcesOf(r).buoyancy, Vec2(0, 0), 1e-12)
+  EXPECT_VEC_NEAR(forcesOf(r).buoyancy, Vec2(0, 0), tol(r))
       << input(r)
       << hint(
              "buoyancy depends on the difference T - T_air (use the airTemperature "
@@ -163,7 +168,7 @@ TEST(Task2Forces, DragOpposesVelocityInAnyDirection) {
       env.drag = kd;
       const Vec2 v = 2.5 * Vec2(std::cos(angle), std::sin(angle));
       const auto r = request(particle(Vec2(0.2, 0.1), v, 1.5), env);
-      EXPECT_VEC_NEAR(forcesOf(r).drag, -kd * v, 1e-9)
+      EXPECT_VEC_NEAR(forcesOf(r).drag, -kd * v, tol(r))
           << input(r)
           << hint(
                  "drag is -k_d v: against the velocity, proportional to it (not to "
@@ -181,7 +186,7 @@ TEST(Task2Forces, RepulsionPushesOutOfAFloor) {
   Environment env = quiet();
   env.repulsion = 400;
   const auto r = request(particle(Vec2(0, -0.05)), env, Contact{0.05, Vec2(0, 1)});
-  EXPECT_VEC_NEAR(forcesOf(r).repulsion, Vec2(0, 20), 1e-12)
+  EXPECT_VEC_NEAR(forcesOf(r).repulsion, Vec2(0, 20), tol(r))
       << input(r) << hint("repulsion is k_r d n: along the contact normal, out of the obstacle");
 }
 
@@ -190,7 +195,7 @@ TEST(Task2Forces, RepulsionFollowsADiagonalNormal) {
   Environment env = quiet();
   env.repulsion = 250;
   const auto r = request(particle(Vec2(0, 0)), env, Contact{0.1, Vec2(0.6, -0.8)});
-  EXPECT_VEC_NEAR(forcesOf(r).repulsion, Vec2(15, -20), 1e-12)
+  EXPECT_VEC_NEAR(forcesOf(r).repulsion, Vec2(15, -20), tol(r))
       << input(r) << hint("use the contact's own normal n (both components), not (0, 1)");
 }
 
@@ -200,7 +205,7 @@ TEST(Task2Forces, NoRepulsionOutsideOrOnTheSurface) {
   for (const double depth : {-0.3, -1e-6, 0.0}) {
     for (const Vec2& n : {Vec2(0, 1), Vec2(-0.8, 0.6)}) {
       const auto r = request(particle(Vec2(0, 0)), env, Contact{depth, n});
-      EXPECT_VEC_NEAR(forcesOf(r).repulsion, Vec2(0, 0), 1e-12)
+      EXPECT_VEC_NEAR(forcesOf(r).repulsion, Vec2(0, 0), tol(r))
           << input(r)
           << hint(
                  "repulsion acts only while the particle is inside (depth > 0); "
@@ -222,7 +227,7 @@ TEST(Task2Forces, ExternalForceAddsGravityBuoyancyAndDrag) {
   env.airTemperature = 300;
   env.drag = 0.25;
   const auto r = request(particle(Vec2(0, 5), Vec2(2, -4), 0.5, 500), env);
-  EXPECT_VEC_NEAR(forcesOf(r).total, Vec2(-0.5, -2), 1e-12)
+  EXPECT_VEC_NEAR(forcesOf(r).total, Vec2(-0.5, -2), tol(r))
       << input(r) << hint("externalForce is the sum gravity + buoyancy + drag (+ repulsion)");
 }
 
@@ -247,7 +252,7 @@ TEST(Task2Forces, ExternalForceAddsEveryObstacleItIsIn) {
   ASSERT_LE(contactWith(env.circles[1], p.x).depth, 0);
 
   const auto r = request(p, env);
-  EXPECT_VEC_NEAR(forcesOf(r).total, expectedTotal(p, env), 1e-9)
+  EXPECT_VEC_NEAR(forcesOf(r).total, expectedTotal(p, env), tol(r))
       << input(r)
       << hint(
              "add repulsionForce(contactWith(obstacle, p.x), env.repulsion) for "
@@ -269,7 +274,7 @@ TEST(Task2Forces, ExternalForceAddsTwoOverlappingCircles) {
   ASSERT_GT(contactWith(env.circles[1], p.x).depth, 0);
 
   const auto r = request(p, env);
-  EXPECT_VEC_NEAR(forcesOf(r).total, expectedTotal(p, env), 1e-9)
+  EXPECT_VEC_NEAR(forcesOf(r).total, expectedTotal(p, env), tol(r))
       << input(r)
       << hint(
              "every obstacle the particle is inside pushes on its own: sum them "
@@ -287,7 +292,7 @@ TEST(Task2Forces, ObstaclesOutsideAddNothing) {
   env.planes.push_back({Vec2(0.8, -0.6), -2.0});
   env.circles.push_back({Vec2(3, 3), 1.0});
   const auto r = request(particle(Vec2(0.5, 0.5), Vec2(1, 2), 2.0), env);
-  EXPECT_VEC_NEAR(forcesOf(r).total, Vec2(-0.5, -21), 1e-9)
+  EXPECT_VEC_NEAR(forcesOf(r).total, Vec2(-0.5, -21), tol(r))
       << input(r)
       << hint(
              "an obstacle the particle is not inside (depth <= 0) adds nothing: "

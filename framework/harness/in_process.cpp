@@ -193,6 +193,11 @@ class InProcess final : public StudentCode {
   ClothResult buildCloth(const ClothSpec& spec) override {
     return guarded<ClothResult>([&](ClothResult& result) {
       MassSpringSystem system;
+      const ClothPrelude& prelude = clothPrelude();
+      for (const Particle& p : prelude.particles) system.addParticle(p);
+      for (const SpringData& s : prelude.springs) {
+        system.addSpring(s.i, s.j, s.ks, s.kd, s.type, s.restLength);
+      }
       a6::buildCloth(system, spec);
       result.particles.assign(system.particles.begin(), system.particles.end());
       result.springs = springsAsData(system);
@@ -233,9 +238,10 @@ class InProcess final : public StudentCode {
       }
       const float invDt = 1.0f / scene->dt;
       for (b2Body* body : scene->bodies) {
-        result.bodies.push_back({"", body->GetMass(), body->GetInertia() -
-                                     body->GetMass() * body->GetLocalCenter().LengthSquared(),
-                                 toVec(body->GetLocalCenter())});
+        result.bodies.push_back(
+            {"", body->GetMass(),
+             body->GetInertia() - body->GetMass() * body->GetLocalCenter().LengthSquared(),
+             toVec(body->GetLocalCenter())});
       }
       for (std::size_t k = 0; k < scene->bodies.size(); ++k) {
         result.bodies[k].name = scene->bodyNames[k];
@@ -255,6 +261,7 @@ class InProcess final : public StudentCode {
             moveDrag(mouse, toB2(event.target));
           } else if (event.kind == DragEvent::Kind::End && mouse != nullptr) {
             endDrag(*scene->world, mouse);
+            result.endDragCleared.push_back(mouse == nullptr ? 1 : 0);
             mouse = nullptr;  // whatever endDrag did, never touch that joint again
           }
         }
@@ -262,7 +269,8 @@ class InProcess final : public StudentCode {
         std::vector<BodyPose>& poses = result.poses.emplace_back();
         for (b2Body* body : scene->bodies) {
           poses.push_back({toVec(body->GetPosition()), body->GetAngle(),
-                           toVec(body->GetLinearVelocity()), body->GetAngularVelocity()});
+                           toVec(body->GetLinearVelocity()), body->GetAngularVelocity(),
+                           body->IsAwake()});
         }
         result.jointCounts.push_back(scene->world->GetJointCount());
       }

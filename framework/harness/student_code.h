@@ -60,18 +60,40 @@ struct SimulateRequest {
   int substeps = 1;           ///< advance(frameDt, substeps) per frame...
   bool stepOnly = false;      ///< ...or, when true, step(frameDt) per frame
   int frames = 1;
-  int recordEvery = 1;        ///< record the state after every k-th frame (and the last)
+  int recordEvery = 1;           ///< record the state after every k-th frame (and the last)
   bool referenceForces = false;  ///< swap in the reference force models (force_model.h)
 };
 struct SimulateResult : Outcome {
-  std::vector<int> recordedFrames;                ///< frame numbers (1-based) recorded
-  std::vector<std::vector<Particle>> states;      ///< one particle list per recorded frame
+  std::vector<int> recordedFrames;            ///< frame numbers (1-based) recorded
+  std::vector<std::vector<Particle>> states;  ///< one particle list per recorded frame
 };
 
 // Task 4 ---------------------------------------------------------------------------------------
-struct ClothResult : Outcome {
+/// buildCloth runs on a system that already holds these (a ball on a rope: a pinned anchor and
+/// two particles, two springs), as in a scene with more than the cloth: the cloth must append
+/// its particles after them (at base = kClothPrelude.size()) and leave them as they were.
+/// The result holds the whole system, prelude first.
+struct ClothPrelude {
   std::vector<Particle> particles;
   std::vector<SpringData> springs;
+};
+inline const ClothPrelude& clothPrelude() {
+  static const ClothPrelude prelude = [] {
+    ClothPrelude out;
+    Particle anchor, knot, ball;
+    anchor.x = Vec2(-3, 2), anchor.m = 1, anchor.pinned = true;
+    knot.x = Vec2(-3, 1.5), knot.m = 0.05;
+    ball.x = Vec2(-3, 1), ball.m = 0.4;
+    out.particles = {anchor, knot, ball};
+    out.springs = {{0, 1, 0.5, 300, 0.3, SpringType::Other},
+                   {1, 2, 0.5, 300, 0.3, SpringType::Other}};
+    return out;
+  }();
+  return prelude;
+}
+struct ClothResult : Outcome {
+  std::vector<Particle> particles;  ///< the prelude's, then the cloth's
+  std::vector<SpringData> springs;  ///< the prelude's, then the cloth's
 };
 
 // Task 5 ---------------------------------------------------------------------------------------
@@ -114,31 +136,32 @@ struct BodyPose {
   double angle = 0;
   Vec2 velocity = Vec2::Zero();
   double angularVelocity = 0;
+  bool awake = true;  ///< false while Box2D lets the body sleep
 };
 struct BodyInfo {
   std::string name;
-  double mass = 0;     ///< kg
-  double inertia = 0;  ///< about the centre of mass, kg·m²
+  double mass = 0;                  ///< kg
+  double inertia = 0;               ///< about the centre of mass, kg·m²
   Vec2 localCenter = Vec2::Zero();  ///< centre of mass in the body frame, m
 };
 /// Everything a test may ask of a joint (fields that do not apply stay zero / false).
 struct JointInfo {
-  std::string type;      ///< revolute, prismatic, distance, wheel, mouse, other
+  std::string type;            ///< revolute, prismatic, distance, wheel, mouse, other
   int bodyA = -2, bodyB = -2;  ///< index into bodies; -1 the ground; -2 unknown
   Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();            ///< world, m
   Vec2 localAnchorA = Vec2::Zero(), localAnchorB = Vec2::Zero();  ///< body frames, m
   Vec2 localAxisA = Vec2::Zero();  ///< prismatic and wheel axis in bodyA's frame
   bool collideConnected = false;
   bool enableLimit = false;
-  double lower = 0, upper = 0;     ///< limits: m (prismatic) or rad (revolute)
+  double lower = 0, upper = 0;  ///< limits: m (prismatic) or rad (revolute)
   bool enableMotor = false;
-  double motorSpeed = 0;           ///< m/s or rad/s
-  double maxMotor = 0;             ///< max motor force (N) or torque (N·m)
+  double motorSpeed = 0;                            ///< m/s or rad/s
+  double maxMotor = 0;                              ///< max motor force (N) or torque (N·m)
   double length = 0, minLength = 0, maxLength = 0;  ///< distance joint, m
-  double stiffness = 0, damping = 0;  ///< distance, wheel, mouse
-  double maxForce = 0;             ///< mouse, N
-  Vec2 target = Vec2::Zero();      ///< mouse, m
-  Vec2 reactionForce = Vec2::Zero();  ///< on bodyB at the last step, N
+  double stiffness = 0, damping = 0;                ///< distance, wheel, mouse
+  double maxForce = 0;                              ///< mouse, N
+  Vec2 target = Vec2::Zero();                       ///< mouse, m
+  Vec2 reactionForce = Vec2::Zero();                ///< on bodyB at the last step, N
 };
 struct Box2DResult : Outcome {
   std::vector<BodyInfo> bodies;
@@ -147,6 +170,7 @@ struct Box2DResult : Outcome {
   std::vector<JointInfo> builtJoints;        ///< the world's joints right after building
   std::vector<int> jointCounts;              ///< the world's joint count after each step
   std::vector<JointInfo> dragJoints;         ///< each mouse joint, as beginDrag returned it
+  std::vector<int> endDragCleared;  ///< per endDrag: 1 if it set the caller's pointer to null
 };
 
 // Scenes (scenes/scene.h): what golden images are rendered from -------------------------------

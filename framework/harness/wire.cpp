@@ -474,7 +474,8 @@ json enc(const harness::BodyPose& p) {
   return {{"position", vec(p.position)},
           {"angle", encodeDouble(p.angle)},
           {"velocity", vec(p.velocity)},
-          {"angularVelocity", encodeDouble(p.angularVelocity)}};
+          {"angularVelocity", encodeDouble(p.angularVelocity)},
+          {"awake", p.awake}};
 }
 harness::BodyPose decPose(const json& j) {
   harness::BodyPose p;
@@ -482,6 +483,7 @@ harness::BodyPose decPose(const json& j) {
   p.angle = getDouble(j, "angle");
   p.velocity = getVec(j, "velocity");
   p.angularVelocity = getDouble(j, "angularVelocity");
+  p.awake = getBool(j, "awake");
   return p;
 }
 
@@ -843,7 +845,8 @@ json encodeResult(const harness::Box2DResult& r) {
           {"joints", encJoints(r.joints)},
           {"builtJoints", encJoints(r.builtJoints)},
           {"jointCounts", ints(r.jointCounts)},
-          {"dragJoints", encJoints(r.dragJoints)}};
+          {"dragJoints", encJoints(r.dragJoints)},
+          {"endDragCleared", ints(r.endDragCleared)}};
 }
 harness::Box2DResult decodeRunBox2D(const json& j) {
   return decodeAs("Box2DResult", [&] {
@@ -855,6 +858,7 @@ harness::Box2DResult decodeRunBox2D(const json& j) {
     r.builtJoints = getList(j, "builtJoints", decJoint);
     r.jointCounts = member(j, "jointCounts", toInts);
     r.dragJoints = getList(j, "dragJoints", decJoint);
+    r.endDragCleared = member(j, "endDragCleared", toInts);
     return r;
   });
 }

@@ -1,5 +1,6 @@
-// What every test file of the physics suite shares: the student's code under test, and
-// failure messages that name the task, the input, the expected and actual value, and a hint.
+// What every test file of the physics suite shares: the student's code under test, tolerances
+// relative to the scale of each comparison's inputs, and failure messages that name the task, the
+// input, the expected and actual value, and a hint.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -18,6 +19,8 @@ harness::StudentCode& student();
 /// "Task 3 (time_stepping.cpp)" for the running test, from its suite name "Task3...".
 std::string currentTask();
 
+/// The shortest text that reads back as the same double: 1e-12, 0.1, 9.81.
+std::string num(double value);
 std::string str(const Vec2& v);
 std::string str(const Particle& p);
 
@@ -27,18 +30,79 @@ std::string hint(const std::string& text);
 /// True when every component is finite.
 inline bool finite(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
 
+// --- Tolerances ------------------------------------------------------------------------------
+// Every comparison's tolerance is `relative` times the scale of its own inputs (a spring force's
+// ks·max(l, l0) + kd·|Δv|, a cloth's size, a scene's extent), so a correct solution computed with
+// float intermediates (about 1e-7 of the scale) passes with a wide margin, and a mistake (a term
+// of the physics wrong: off by its own size) fails by a wide margin too. docs/instructor.md
+// ("Tolerances and margins") gives the margins the wrong versions keep.
+
+/// One computation from the inputs (a force, one step).
+constexpr double kOneComputation = 1e-5;
+/// A value after many steps: float rounding accumulates with each one.
+constexpr double kManySteps = 1e-4;
+
+struct Tolerance {
+  double scale = 1;     ///< the size of the inputs the value comes from, in its units
+  double relative = 0;  ///< the allowed error, as a fraction of scale
+  /// True when the expected value is exact, so any difference is rounding (the float note of
+  /// the grader's report reads these); false for a model's error (statistics, discretisation).
+  bool exact = true;
+  double absolute() const { return scale * relative; }
+};
+
+/// `relative` of `scale`: the expected value is exact, the difference can only be rounding.
+inline Tolerance relativeTo(double scale, double relative = kOneComputation) {
+  return Tolerance{std::abs(scale), relative, true};
+}
+/// An allowed error `absolute` that is a model's own (a period measured from a discrete orbit,
+/// a sample mean): no rounding, no float note. `scale` names what it is a fraction of.
+inline Tolerance modelError(double absolute, double scale) {
+  return Tolerance{std::abs(scale), scale != 0 ? std::abs(absolute / scale) : 0, false};
+}
+
 /// |actual - expected| <= tol, componentwise; the message names both values and the task.
 ::testing::AssertionResult vecNear(const char* actualExpr, const char* expectedExpr,
                                    const char* tolExpr, const Vec2& actual, const Vec2& expected,
-                                   double tol);
+                                   const Tolerance& tol);
 /// |actual - expected| <= tol; the message names both values and the task.
 ::testing::AssertionResult scalarNear(const char* actualExpr, const char* expectedExpr,
                                       const char* tolExpr, double actual, double expected,
-                                      double tol);
+                                      const Tolerance& tol);
+
+/// A check over many inputs reports the first that fails and how many more did, not one
+/// message each:
+///   ManyInputs inputs("directions");
+///   for (...) inputs.expectNear(actual, expected, tol, input(r));
+///   inputs.report(hint("..."));   // or let it go out of scope
+class ManyInputs {
+ public:
+  explicit ManyInputs(std::string what) : what_(std::move(what)) {}
+  ManyInputs(const ManyInputs&) = delete;
+  ManyInputs& operator=(const ManyInputs&) = delete;
+  ~ManyInputs() { report(""); }
+
+  /// Compares one input's value; `input` says which input it was (shown for the first failure).
+  bool expectNear(const Vec2& actual, const Vec2& expected, const Tolerance& tol,
+                  const std::string& input);
+  bool expectNear(double actual, double expected, const Tolerance& tol, const std::string& input);
+  /// Records an input that failed for another reason (with its own message).
+  void fail(const std::string& message);
+  int failed() const { return failed_; }
+  /// Adds one GoogleTest failure for all the failed inputs, if any, with `hint` appended.
+  void report(const std::string& hint);
+
+ private:
+  bool record(const ::testing::AssertionResult& result, const std::string& input);
+  std::string what_;
+  std::string first_;
+  int total_ = 0, failed_ = 0;
+  bool reported_ = false;
+};
 
 }  // namespace a6::test
 
-/// EXPECT_VEC_NEAR(actual, expected, tol) << "input: ..." << a6::test::hint("...");
+/// EXPECT_VEC_NEAR(actual, expected, relativeTo(scale)) << "input: ..." << hint("...");
 #define EXPECT_VEC_NEAR(actual, expected, tol) \
   EXPECT_PRED_FORMAT3(::a6::test::vecNear, actual, expected, tol)
 #define ASSERT_VEC_NEAR(actual, expected, tol) \
@@ -50,5 +114,6 @@ inline bool finite(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite
 
 /// Stops the test when the student's code reported an error (an exception, or in the grader a
 /// crash or timeout), with that error in the message.
-#define A6_ASSERT_RAN(result) \
-  ASSERT_TRUE((result).ok()) << ::a6::test::currentTask() << ": your code failed: " << (result).error
+#define A6_ASSERT_RAN(result)                             \
+  ASSERT_TRUE((result).ok()) << ::a6::test::currentTask() \
+                             << ": your code failed: " << (result).error

@@ -1,17 +1,46 @@
 #include "summary.h"
 
 #include <cstdio>
+#include <limits>
 #include <string>
 
+#include "comparisons.h"
+#include "suite.h"
+
 namespace a6::test {
+
+TaskSummary::TaskSummary() { margin_.fill(std::numeric_limits<double>::quiet_NaN()); }
 
 void TaskSummary::OnTestEnd(const ::testing::TestInfo& info) {
   const std::string suite = info.test_suite_name();
   if (suite.size() < 5 || suite.compare(0, 4, "Task") != 0) return;
   const int task = suite[4] - '1';
   if (task < 0 || task >= 6 || info.result()->Skipped()) return;
-  (info.result()->Passed() ? passed_ : failed_)[task]++;
+  const ComparisonLog log = comparisonsOf(info);
+  if (info.result()->Passed()) {
+    ++passed_[task];
+    closest_[task] = std::max(closest_[task], log.largestPassingRatio);
+    agreement_[task] = std::max(agreement_[task], log.agreement);
+    return;
+  }
+  ++failed_[task];
+  const double margin = marginOf(info);
+  std::printf("A6-CHECK-MARGIN %s.%s %s\n", info.test_suite_name(), info.name(),
+              num(margin).c_str());
+  if (!(margin_[task] <= margin)) margin_[task] = margin;  // NaN: the first failed check
 }
+
+namespace {
+
+void printLine(const char* key, const std::array<double, 6>& values) {
+  std::string line = key;
+  for (int t = 0; t < 6; ++t) {
+    line += " " + std::to_string(t + 1) + ":" + (std::isnan(values[t]) ? "none" : num(values[t]));
+  }
+  std::printf("%s\n", line.c_str());
+}
+
+}  // namespace
 
 void TaskSummary::OnTestProgramEnd(const ::testing::UnitTest&) {
   static const char* const files[] = {"spring.cpp", "forces.cpp",          "time_stepping.cpp",
@@ -24,10 +53,15 @@ void TaskSummary::OnTestProgramEnd(const ::testing::UnitTest&) {
     passed += passed_[t];
     failed += failed_[t];
   }
-  // One machine-readable line for the checks: task:passed:failed ...
+  // Machine-readable lines for the checks: task:passed:failed ..., then the numbers of
+  // comparisons.h per task.
   std::printf("A6-SUMMARY");
   for (int t = 0; t < 6; ++t) std::printf(" %d:%d:%d", t + 1, passed_[t], failed_[t]);
-  std::printf("\n%d passed, %d failed\n", passed, failed);
+  std::printf("\n");
+  printLine("A6-MARGIN", margin_);
+  printLine("A6-CLOSEST", closest_);
+  printLine("A6-AGREEMENT", agreement_);
+  std::printf("%d passed, %d failed\n", passed, failed);
   std::fflush(stdout);
 }
 

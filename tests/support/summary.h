@@ -1,6 +1,9 @@
-// The per-task summary every physics-suite main prints at the end: a table for people and one
-// machine-readable line for the checks (tests/check_run.cmake):
+// The per-task summary every physics-suite main prints at the end: a table for people and
+// machine-readable lines for the checks (tests/check_run.cmake):
 //   A6-SUMMARY 1:<passed>:<failed> 2:<passed>:<failed> ... 6:<passed>:<failed>
+//   A6-MARGIN 1:<smallest margin of a failed check, or none> ...   (comparisons.h)
+//   A6-CLOSEST 1:<largest difference / tolerance of a passed exact comparison> ...
+//   A6-AGREEMENT 1:<largest relative difference of a passed exact comparison> ...
 // Tests count for the task named by their suite ("Task3TimeStepping..." is task 3).
 #pragma once
 
@@ -12,11 +15,13 @@ namespace a6::test {
 
 class TaskSummary : public ::testing::EmptyTestEventListener {
  public:
+  TaskSummary();
   void OnTestEnd(const ::testing::TestInfo& info) override;
   void OnTestProgramEnd(const ::testing::UnitTest& unitTest) override;
 
  private:
   std::array<int, 6> passed_{}, failed_{};
+  std::array<double, 6> margin_{}, closest_{}, agreement_{};
 };
 
 }  // namespace a6::test
