@@ -1,8 +1,11 @@
 cmake_minimum_required(VERSION 3.25)
 # Runs a physics-suite binary and checks its per-task summary (the A6-SUMMARY line):
-#   cmake -DBINARY=<path> -DFAIL=<tasks, comma-separated> -DPASS=<tasks> -P check_run.cmake
+#   cmake -DBINARY=<path> -DFAIL=<tasks, comma-separated> -DPASS=<tasks> [-DMIN_MARGIN=10]
+#         -P check_run.cmake
 # Every FAIL task must have at least one failed test, every PASS task none, and the binary must
-# have run to the end (a crash prints no summary).
+# have run to the end (a crash prints no summary). With MIN_MARGIN, every FAIL task's margin
+# (A6-MARGIN: the smallest, over its failed checks, of how many times its tolerance a check
+# missed by; tests/support/comparisons.h) must be at least MIN_MARGIN.
 string(REPLACE "," ";" fail "${FAIL}")
 string(REPLACE "," ";" pass "${PASS}")
 execute_process(COMMAND ${BINARY} --gtest_brief=1 OUTPUT_VARIABLE out ERROR_VARIABLE err
@@ -12,6 +15,14 @@ if(NOT summary)
   message(FATAL_ERROR "${BINARY} did not run to the end (exit: ${rc}); no summary.\n${out}\n${err}")
 endif()
 message(STATUS "${summary}")
+string(REGEX MATCH "A6-MARGIN[^\n]*" margins "${out}")
+string(REGEX MATCH "A6-CLOSEST[^\n]*" closest "${out}")
+message(STATUS "${margins}")
+message(STATUS "${closest}")
+string(REGEX MATCHALL "A6-CHECK-MARGIN[^\n]*" checkMargins "${out}")
+foreach(line IN LISTS checkMargins)
+  message(STATUS "${line}")
+endforeach()
 set(problems "")
 foreach(task IN LISTS fail pass)
   string(REGEX MATCH " ${task}:([0-9]+):([0-9]+)" m "${summary}")
@@ -20,6 +31,14 @@ foreach(task IN LISTS fail pass)
   if(task IN_LIST fail)
     if(failed EQUAL 0)
       string(APPEND problems "task ${task} should fail but all its ${passed} tests passed\n")
+    elseif(DEFINED MIN_MARGIN)
+      string(REGEX MATCH " ${task}:([^ ]+)" m "${margins}")
+      set(margin "${CMAKE_MATCH_1}")
+      # "inf": every failed check failed for a reason that is not a number (a count, a crash).
+      if(NOT margin STREQUAL "inf" AND (margin STREQUAL "none" OR margin LESS MIN_MARGIN))
+        string(APPEND problems "task ${task}'s margin is ${margin}, under ${MIN_MARGIN}: a check "
+                               "misses by less than ${MIN_MARGIN} times its tolerance\n")
+      endif()
     endif()
   elseif(failed GREATER 0)
     string(APPEND problems "task ${task} should pass but ${failed} of its tests failed\n")
