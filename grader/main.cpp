@@ -37,6 +37,7 @@
 #include <sstream>
 #include <thread>
 
+#include "comparisons.h"
 #include "harness/student_code.h"
 #include "process.h"
 #include "report.h"
@@ -306,6 +307,7 @@ class Collector : public ::testing::EmptyTestEventListener {
     } else {
       current_.passed = result.Passed();
     }
+    current_.agreement = a6::test::comparisonsOf(info).agreement;
     // Golden-image checks name their images (student, reference, difference) as properties.
     std::string images[3];
     for (int k = 0; k < result.test_property_count(); ++k) {
@@ -700,7 +702,8 @@ int grade(const Options& options, const Rubric& rubric) {
     // The images: the grader's alone (the sandbox's user may not read them, whatever its view).
     fs::create_directories(work / "images", ec);
     fs::permissions(work / "images", fs::perms::owner_all, ec);
-    a6::test::registerGoldenChecks((work / "images").string());
+    a6::test::registerGoldenChecks((work / "images").string(),
+                                   a6::test::ImagePaths::InTheReportOnly);
 #endif
     auto* collector = new Collector(rubric, report.tests, !options.quiet);
     ::testing::UnitTest::GetInstance()->listeners().Append(collector);  // GoogleTest owns it

@@ -100,8 +100,26 @@ std::string itemTitle(const ScoredItem& s) {
          (total == 1 ? " check)" : " checks)");
 }
 
+// Relative differences above this are float rounding, not double's (tests/support/comparisons.h).
+constexpr double kBeyondDoubleRounding = 1e-9;
+
+// The note for an item whose passed checks agree only to float precision (tasks 1-5: Box2D's
+// task 6 is float by design), or "". It costs nothing.
+std::string precisionNote(const ScoredItem& s) {
+  if (s.item.task < 1 || s.item.task > 5) return "";
+  double agreement = 0;
+  for (const TestOutcome* t : s.tests) {
+    if (t->passed) agreement = std::max(agreement, t->agreement);
+  }
+  if (!(agreement > kBeyondDoubleRounding)) return "";
+  char about[32];
+  std::snprintf(about, sizeof about, "1e%d", static_cast<int>(std::lround(std::log10(agreement))));
+  return std::string("Note: your values agree with the reference to about ") + about +
+         ", relative: that is float rounding; the framework uses double. It costs nothing.\n";
+}
+
 // The text Gradescope shows under an item: why the task used the starter, then each failing
-// test with its message (which carries the hint).
+// test with its message (which carries the hint), and the precision note.
 std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
   std::string out;
   if (const TaskBuild* t = buildOf(report, s.item.task); t != nullptr && t->usesStarter()) {
@@ -123,6 +141,7 @@ std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
       out += "\nFAILED " + t->name + "\n" + cap(t->message, kMessageCap) + "\n";
     }
   }
+  out += precisionNote(s);
   return cap(out, kItemOutputCap);
 }
 
@@ -412,6 +431,7 @@ table { border-collapse: collapse; margin: .5em 0; } td, th { padding: .25em .7e
 th { background: #f5f5f5; white-space: nowrap; }
 .num { text-align: right; font-variant-numeric: tabular-nums; }
 .pass { color: #17692b; font-weight: 600; } .fail { color: #b3261e; font-weight: 600; }
+.note { color: #555; font-style: italic; }
 .box { padding: .6em 1em; border-radius: 6px; margin: .6em 0; }
 .error { background: #fdecea; border: 1px solid #f5c2c0; } .warn { background: #fff7e0; border: 1px solid #f0d890; }
 pre { background: #f7f7f9; border: 1px solid #e4e4e8; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
@@ -544,6 +564,9 @@ std::string htmlReport(const GradeReport& report) {
           << "</td><td class=\"num\">" << fixed2(t->seconds) << "</td></tr>\n";
     }
     out << "</table>\n";
+    if (const std::string note = precisionNote(s); !note.empty()) {
+      out << "<p class=\"note\">" << htmlEscape(note) << "</p>\n";
+    }
   }
 
   if (!report.probeOutput.empty()) {

@@ -115,16 +115,8 @@ PairSet expectedPairs(int n, SpringType t) {
 }
 
 // The cloth's part of what the student's buildCloth made in a system that already held a
-// prelude (cloth_result.h), indices relative to base. A builder that ignored base fails here,
-// with that said, whatever the check.
-harness::ClothResult build(const ClothSpec& spec) {
-  const harness::ClothResult r = student().buildCloth(spec);
-  if (!r.ok()) return r;
-  const std::string problem = preludeProblem(r);
-  EXPECT_TRUE(problem.empty()) << currentTask() << ": " << problem << "\n  " << input(spec)
-                               << hint(preludeAdvice());
-  return clothPart(r);
-}
+// prelude (cloth_result.h), indices relative to base.
+harness::ClothResult build(const ClothSpec& spec) { return clothPart(student().buildCloth(spec)); }
 
 // Compares the set of pairs of one type with the expected set; names what is missing or extra.
 void expectTopology(const ClothSpec& spec, SpringType t, const char* pattern) {
@@ -143,6 +135,25 @@ void expectTopology(const ClothSpec& spec, SpringType t, const char* pattern) {
       << " pairs)\n  missing: " << pairs(missing, spec.n) << "\n  extra:   " << pairs(extra, spec.n)
       << hint(std::string("particle (i,j) is at index j*(n+1) + i; ") + typeName(t) +
               " springs connect " + pattern + ", and none may reach outside the grid");
+}
+
+// The other checks read a builder that forgot base as it meant it: this one costs the mistake.
+TEST(Task4Cloth, BuildsAfterWhatTheSystemAlreadyHolds) {
+  for (int n : {1, 4}) {
+    const ClothSpec spec = clothSpec(n);
+    const harness::ClothResult r = student().buildCloth(spec);
+    A6_ASSERT_RAN(r);
+    // A cloth was appended (a stub that adds nothing leaves the prelude intact too)...
+    const std::size_t base = harness::clothPrelude().particles.size();
+    ASSERT_EQ(r.particles.size(), base + static_cast<std::size_t>((n + 1) * (n + 1)))
+        << currentTask() << ": particles in the system after buildCloth, " << input(spec)
+        << hint("append the (n+1)² particles of the cloth after the ones the system holds");
+    // ...and the prelude is as it was, the springs and pins relative to base.
+    const std::string problem = preludeProblem(r);
+    EXPECT_TRUE(problem.empty()) << currentTask() << ": " << problem << "\n  " << input(spec)
+                                 << hint(preludeAdvice());
+    if (!problem.empty()) break;
+  }
 }
 
 TEST(Task4Cloth, ParticleCountIsNPlusOneSquared) {

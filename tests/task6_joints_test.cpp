@@ -551,13 +551,12 @@ TEST(Task6Joints, MouseDragWakesASleepingBody) {
   ASSERT_FALSE(rest.poses.back()[0].awake)
       << "the hanging bob should be asleep after " << sleepy << " steps";
   const Vec2 grab = rest.poses.back()[0].position;
-  const Box2DResult r =
-      runScene("hanging", sleepy + 1, {{DragEvent::Kind::Begin, sleepy, grab}});
+  const Box2DResult r = runScene("hanging", sleepy + 1, {{DragEvent::Kind::Begin, sleepy, grab}});
   A6_ASSERT_RAN(r);
   ASSERT_EQ(r.dragJoints.size(), 1u) << currentTask() << ": beginDrag returned no joint";
   EXPECT_TRUE(r.poses.back()[0].awake)
-      << currentTask() << ": a drag begun on the sleeping bob at " << str(grab)
-      << " left it asleep" << hint("beginDrag must wake the body: body->SetAwake(true)");
+      << currentTask() << ": a drag begun on the sleeping bob at " << str(grab) << " left it asleep"
+      << hint("beginDrag must wake the body: body->SetAwake(true)");
 }
 
 TEST(Task6Joints, EndDragSetsTheCallersPointerToNull) {

@@ -69,10 +69,10 @@ struct SimulateResult : Outcome {
 };
 
 // Task 4 ---------------------------------------------------------------------------------------
-/// buildCloth runs on a system that already holds these (a ball on a rope: a pinned anchor and
-/// two particles, two springs), as in a scene with more than the cloth: the cloth must append
-/// its particles after them (at base = kClothPrelude.size()) and leave them as they were.
-/// The result holds the whole system, prelude first.
+/// buildCloth runs on a system that already holds these (a ball on a two-spring rope: three
+/// particles, two springs, none pinned), as in a scene with more than the cloth: the cloth must
+/// append its particles after them (at base = clothPrelude().particles.size()) and leave them
+/// as they were. The result holds the whole system, prelude first.
 struct ClothPrelude {
   std::vector<Particle> particles;
   std::vector<SpringData> springs;
@@ -81,7 +81,7 @@ inline const ClothPrelude& clothPrelude() {
   static const ClothPrelude prelude = [] {
     ClothPrelude out;
     Particle anchor, knot, ball;
-    anchor.x = Vec2(-3, 2), anchor.m = 1, anchor.pinned = true;
+    anchor.x = Vec2(-3, 2), anchor.m = 1;
     knot.x = Vec2(-3, 1.5), knot.m = 0.05;
     ball.x = Vec2(-3, 1), ball.m = 0.4;
     out.particles = {anchor, knot, ball};

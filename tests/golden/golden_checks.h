@@ -22,6 +22,9 @@ harness::StudentCode& student();
 /// them as the test properties student_image, reference_image and difference_image. Nothing
 /// runs, and no GL context is made, until the tests do. Without a readable manifest, one failing
 /// test (GoldenTask0.ManifestReads) says why; returns false then.
-bool registerGoldenChecks(const std::string& failuresDir);
+/// `paths`: whether failure messages name the image files (a student's own run) or only say that
+/// the report shows them (the grader: its folders mean nothing to a student).
+enum class ImagePaths { Shown, InTheReportOnly };
+bool registerGoldenChecks(const std::string& failuresDir, ImagePaths paths = ImagePaths::Shown);
 
 }  // namespace a6::test

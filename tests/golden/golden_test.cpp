@@ -53,8 +53,9 @@ using golden::GoldenImage;
 struct Config {
   std::string manifest = std::string(A6_GOLDEN_DIR) + "/manifest.json";
   std::string failures;
-  std::set<int> tasks;   // empty: every image
-  bool verbose = false;  // print every comparison, passed or not
+  bool showPaths = true;  // false in the grader: its folders are not the student's
+  std::set<int> tasks;    // empty: every image
+  bool verbose = false;   // print every comparison, passed or not
 };
 
 Config& config() {
@@ -159,6 +160,44 @@ std::string header(const GoldenImage& image) {
   return out.str();
 }
 
+// The tasks, other than the image's own, whose code the image's scene runs and whose physics
+// checks (Task<N>..., run before the images in the same program) failed.
+std::vector<int> failingEarlierTasks(const GoldenImage& image) {
+  std::vector<int> out;
+  const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
+  for (int t = 1; t <= 6; ++t) {
+    if (t == image.task || !image.exercises(t)) continue;
+    const std::string prefix = "Task" + std::to_string(t);
+    for (int k = 0; k < unit.total_test_suite_count(); ++k) {
+      const ::testing::TestSuite& suite = *unit.GetTestSuite(k);
+      if (std::string(suite.name()).rfind(prefix, 0) == 0 && suite.failed_test_count() > 0) {
+        out.push_back(t);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+// The image's hint, or, when the scene runs another task's code that fails its own checks, that
+// task named: its mistake shows in the picture, and this task's file may well be right.
+std::string hintFor(const GoldenImage& image) {
+  static const char* const code[] = {"spring force",  "forces",          "time stepping",
+                                     "cloth builder", "particle system", "joints"};
+  const std::vector<int> failing = failingEarlierTasks(image);
+  if (failing.empty()) return image.hint;
+  std::string names;
+  for (std::size_t k = 0; k < failing.size(); ++k) {
+    const int t = failing[k];
+    names += (k == 0                    ? ""
+              : k + 1 == failing.size() ? " and "
+                                        : ", ") +
+             std::string("your ") + code[t - 1] + " (task " + std::to_string(t) + ")";
+  }
+  return "this scene also runs " + names + ", which " +
+         (failing.size() == 1 ? "fails its" : "fail their") + " checks: fix that first";
+}
+
 class GoldenImageTest : public ::testing::Test {
  public:
   GoldenImageTest(GoldenImage image, std::string folder)
@@ -174,7 +213,7 @@ class GoldenImageTest : public ::testing::Test {
     std::string error;
     const Snapshot* snapshot = Scenes::get().snapshot(image_.scene, image_.frame, &error);
     ASSERT_NE(snapshot, nullptr) << header(image_) << "  the student code failed: " << error
-                                 << "\n  hint: " << image_.hint;
+                                 << "\n  hint: " << hintFor(image_);
     // This process draws and compares.
     const Image actual = session.renderer().render(*snapshot, image_.width, image_.height);
     ASSERT_FALSE(actual.empty()) << header(image_) << "  " << session.renderer().error();
@@ -202,15 +241,17 @@ class GoldenImageTest : public ::testing::Test {
     message << header(image_) << "  differs from every approved reference (compare: "
             << golden::toString(image_.compare) << ", exact first, then tolerance "
             << image_.tolerance.perChannel << " per channel):\n"
-            << golden::describeChecks(image_, verdict) << "  hint: " << image_.hint << "\n";
-    if (files.error.empty()) {
+            << golden::describeChecks(image_, verdict) << "  hint: " << hintFor(image_) << "\n";
+    if (files.error.empty() && !config().showPaths) {
+      message << "  the images (yours, the reference, the difference) are in the report\n";
+    } else if (files.error.empty()) {
       message << "  images in " << config().failures << ":\n"
               << "    actual:     " << files.actual << "\n"
               << "    expected:   " << (verdict.expected.empty() ? "(none)" : files.expected)
               << "\n"
               << "    difference: " << (verdict.expected.empty() ? "(none)" : files.difference)
               << "\n";
-    } else {
+    } else if (config().showPaths) {
       message << "  could not write the images: " << files.error << "\n";
     }
     const std::string here = session.context().description();
@@ -254,8 +295,7 @@ void registerImages(const golden::Manifest& manifest, const std::string& suffix)
 
 // Registers the images of the manifest at `path` in suites GoldenTask<N><suffix> (false: it could
 // not be read, and one failing test, Manifest.<errorTest>, says why).
-bool registerManifest(const std::string& path, const std::string& suffix,
-                      const char* errorTest) {
+bool registerManifest(const std::string& path, const std::string& suffix, const char* errorTest) {
   golden::ManifestResult read = golden::readManifest(path);
   if (!read) {
     const std::string error = read.error;
@@ -272,8 +312,9 @@ bool registerManifest(const std::string& path, const std::string& suffix,
 // Registers one test per manifest image (false: the manifest could not be read, and one
 // failing test, Manifest.Reads, says why), then the hidden images (graders only: a student
 // release has no hidden/ folder) beside it, as GoldenTask<N>Hidden.<name>.
-bool registerGoldenChecks(const std::string& failuresDir) {
+bool registerGoldenChecks(const std::string& failuresDir, ImagePaths paths) {
   config().failures = std::filesystem::absolute(failuresDir).lexically_normal().string();
+  config().showPaths = paths == ImagePaths::Shown;
   if (!registerManifest(config().manifest, "", "Reads")) return false;
   const std::filesystem::path hidden =
       std::filesystem::path(config().manifest).parent_path() / "hidden" / "manifest.json";
@@ -341,10 +382,9 @@ void registerDeterminismTests() {
   for (const auto& c : cases) {
     const std::string scene = c.scene;
     const int frame = c.frame;
-    ::testing::RegisterTest("Determinism", c.name, nullptr, nullptr, __FILE__, __LINE__,
-                            [scene, frame]() -> ::testing::Test* {
-                              return new DeterminismTest(scene, frame);
-                            });
+    ::testing::RegisterTest(
+        "Determinism", c.name, nullptr, nullptr, __FILE__, __LINE__,
+        [scene, frame]() -> ::testing::Test* { return new DeterminismTest(scene, frame); });
   }
 }
 
@@ -367,8 +407,7 @@ int runGoldenTests(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   namespace fs = std::filesystem;
   const fs::path program = fs::absolute(argv[0]).lexically_normal();
-  std::string failures =
-      (program.parent_path() / "golden_failures" / program.filename()).string();
+  std::string failures = (program.parent_path() / "golden_failures" / program.filename()).string();
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
     auto value = [&](const char* flag) -> const char* {

@@ -243,6 +243,41 @@ INSTANTIATE_TEST_SUITE_P(Wrong, WrongVersion, ::testing::ValuesIn(wrongVersions(
                            return info.param;
                          });
 
+// A correct solution written another way (tests/alternative/: float intermediates, other loop
+// and summation orders, a 1 mm guard) gets every point; agreeing only to float precision adds a
+// note that costs nothing.
+class CorrectAlternative : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CorrectAlternative, GetsEveryPoint) {
+  const std::string name = GetParam();
+  const fs::path dir = outDir("alternative_" + name);
+  const Graded g =
+      grade(a6::test::staging::stageAlternative(dir / "submission", name), dir / "out");
+  expectCompleted(g);
+  if (HasFatalFailure()) return;
+  double all = 0;
+  for (const RubricItem& item : rubric().items) all += item.points;
+  EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), all) << g.results.dump(2).substr(0, 8000);
+  std::string notes;
+  for (const json& t : g.results["tests"]) {
+    const std::string output = t.value("output", "");
+    if (output.find("float rounding") != std::string::npos) notes += t.value("name", "") + "\n";
+  }
+  std::printf("[ scores   ] %s: score %s; items with the float note:\n%s", name.c_str(),
+              g.results["score"].dump().c_str(), notes.c_str());
+  if (name.rfind("float", 0) == 0) {
+    EXPECT_FALSE(notes.empty()) << "a float solution's items carry the float note";
+  } else {
+    EXPECT_TRUE(notes.empty()) << "a double solution's items carry no float note:\n" << notes;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Alternative, CorrectAlternative,
+                         ::testing::ValuesIn(a6::test::staging::alternatives()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           return info.param;
+                         });
+
 // The seed is derived from the files (no --seed here), the messages hold computed values: still,
 // twice the same submission gives the same results.json, timing aside.
 TEST(Scores, GradingTwiceGivesTheSameResults) {

@@ -134,6 +134,28 @@ inline fs::path stageWrong(const fs::path& dir, const std::string& name) {
   return dir;
 }
 
+/// Every correct alternative under tests/alternative/ (a folder), sorted.
+inline std::vector<std::string> alternatives() {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(kSource / "tests" / "alternative", ec)) {
+    if (entry.is_directory()) names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/// The folder an alternative is graded as: the solution's six files, its own in their place.
+inline fs::path stageAlternative(const fs::path& dir, const std::string& name) {
+  fs::create_directories(dir);
+  for (const std::string& file : kTaskFiles) {
+    const fs::path own = kSource / "tests" / "alternative" / name / file;
+    fs::copy_file(fs::exists(own) ? own : kSource / "solution" / file, dir / file,
+                  fs::copy_options::overwrite_existing);
+  }
+  return dir;
+}
+
 /// The tasks a wrong version's EXPECT file names ("fail: 3 4").
 inline std::set<int> failingTasks(const std::string& name) {
   std::set<int> tasks;

@@ -47,21 +47,28 @@ inline std::string preludeAdvice() {
          "cloth's first particle; use base in addSpring and when pinning";
 }
 
-/// The cloth's particles and springs, with indices relative to base (an index of the prelude
-/// becomes negative).
+/// The cloth's particles and springs, with indices relative to base. A builder that indexed as
+/// if the system were empty (preludeProblem) is read as it meant it: its spring indices and its
+/// pins are taken as the cloth's own, so that the one mistake costs the one check that names it
+/// (Task4Cloth.BuildsAfterWhatTheSystemAlreadyHolds), not every cloth check.
 inline harness::ClothResult clothPart(const harness::ClothResult& r) {
   const harness::ClothPrelude& prelude = harness::clothPrelude();
-  const int base = static_cast<int>(prelude.particles.size());
+  const std::size_t base = prelude.particles.size();
+  const bool asIfEmpty = !preludeProblem(r).empty();
   harness::ClothResult out;
   out.error = r.error;
-  if (r.particles.size() >= prelude.particles.size()) {
+  if (r.particles.size() >= base)
     out.particles.assign(r.particles.begin() + base, r.particles.end());
+  if (asIfEmpty) {
+    for (std::size_t k = 0; k < out.particles.size(); ++k)
+      out.particles[k].pinned = r.particles[k].pinned;
   }
+  const int shift = asIfEmpty ? 0 : static_cast<int>(base);
   for (std::size_t k = std::min(prelude.springs.size(), r.springs.size()); k < r.springs.size();
        ++k) {
     SpringData s = r.springs[k];
-    s.i = s.i < 0 ? s.i : s.i - base;
-    s.j = s.j < 0 ? s.j : s.j - base;
+    s.i = s.i < 0 ? s.i : s.i - shift;
+    s.j = s.j < 0 ? s.j : s.j - shift;
     out.springs.push_back(s);
   }
   return out;
