@@ -57,6 +57,33 @@ harness::ForcesResult forcesOf(const harness::ForcesRequest& r) {
   return result;
 }
 
+// The hint of a check of externalForce's total: when one of the parts it adds is itself wrong
+// (the checks of gravity, buoyancy or drag fail too), that part, not `sumHint`.
+std::string totalHint(const harness::ForcesResult& got, const harness::ForcesRequest& r,
+                      const std::string& sumHint) {
+  const Particle& p = r.particle;
+  const Environment& env = r.env;
+  const Tolerance t = relativeTo(externalForceScale(p, env, r.contact.depth));
+  const struct {
+    const char* name;
+    Vec2 actual, expected;
+  } parts[] = {
+      {"gravity (m g)", got.gravity, p.m * env.gravity},
+      {"buoyancy (b (T - T_air) (0, 1))", got.buoyancy,
+       env.buoyancy * (p.temperature - env.airTemperature) * Vec2(0, 1)},
+      {"drag (-k_d v)", got.drag, -env.drag * p.v},
+  };
+  for (const auto& part : parts) {
+    if (!finite(part.actual) ||
+        (part.actual - part.expected).cwiseAbs().maxCoeff() > t.absolute()) {
+      return hint(std::string("your ") + part.name +
+                  " is off for this particle: " + str(part.actual) + " instead of " +
+                  str(part.expected) + "; fix that part first (its own checks fail too)");
+    }
+  }
+  return hint(sumHint);
+}
+
 harness::ForcesRequest request(const Particle& p, const Environment& env,
                                const Contact& contact = Contact{-1, Vec2(0, 1)}) {
   harness::ForcesRequest r;
@@ -227,8 +254,10 @@ TEST(Task2Forces, ExternalForceAddsGravityBuoyancyAndDrag) {
   env.airTemperature = 300;
   env.drag = 0.25;
   const auto r = request(particle(Vec2(0, 5), Vec2(2, -4), 0.5, 500), env);
-  EXPECT_VEC_NEAR(forcesOf(r).total, Vec2(-0.5, -2), tol(r))
-      << input(r) << hint("externalForce is the sum gravity + buoyancy + drag (+ repulsion)");
+  const harness::ForcesResult got = forcesOf(r);
+  EXPECT_VEC_NEAR(got.total, Vec2(-0.5, -2), tol(r))
+      << input(r)
+      << totalHint(got, r, "externalForce is the sum gravity + buoyancy + drag (+ repulsion)");
 }
 
 TEST(Task2Forces, ExternalForceAddsEveryObstacleItIsIn) {
@@ -252,12 +281,13 @@ TEST(Task2Forces, ExternalForceAddsEveryObstacleItIsIn) {
   ASSERT_LE(contactWith(env.circles[1], p.x).depth, 0);
 
   const auto r = request(p, env);
-  EXPECT_VEC_NEAR(forcesOf(r).total, expectedTotal(p, env), tol(r))
+  const harness::ForcesResult got = forcesOf(r);
+  EXPECT_VEC_NEAR(got.total, expectedTotal(p, env), tol(r))
       << input(r)
-      << hint(
-             "add repulsionForce(contactWith(obstacle, p.x), env.repulsion) for "
-             "EVERY half-plane and EVERY circle in env, on top of gravity, "
-             "buoyancy and drag");
+      << totalHint(got, r,
+                   "add repulsionForce(contactWith(obstacle, p.x), env.repulsion) for "
+                   "EVERY half-plane and EVERY circle in env, on top of gravity, "
+                   "buoyancy and drag");
 }
 
 TEST(Task2Forces, ExternalForceAddsTwoOverlappingCircles) {
@@ -274,11 +304,12 @@ TEST(Task2Forces, ExternalForceAddsTwoOverlappingCircles) {
   ASSERT_GT(contactWith(env.circles[1], p.x).depth, 0);
 
   const auto r = request(p, env);
-  EXPECT_VEC_NEAR(forcesOf(r).total, expectedTotal(p, env), tol(r))
+  const harness::ForcesResult got = forcesOf(r);
+  EXPECT_VEC_NEAR(got.total, expectedTotal(p, env), tol(r))
       << input(r)
-      << hint(
-             "every obstacle the particle is inside pushes on its own: sum them "
-             "all, using each obstacle's own depth and normal from contactWith");
+      << totalHint(got, r,
+                   "every obstacle the particle is inside pushes on its own: sum them "
+                   "all, using each obstacle's own depth and normal from contactWith");
 }
 
 TEST(Task2Forces, ObstaclesOutsideAddNothing) {
@@ -292,11 +323,12 @@ TEST(Task2Forces, ObstaclesOutsideAddNothing) {
   env.planes.push_back({Vec2(0.8, -0.6), -2.0});
   env.circles.push_back({Vec2(3, 3), 1.0});
   const auto r = request(particle(Vec2(0.5, 0.5), Vec2(1, 2), 2.0), env);
-  EXPECT_VEC_NEAR(forcesOf(r).total, Vec2(-0.5, -21), tol(r))
+  const harness::ForcesResult got = forcesOf(r);
+  EXPECT_VEC_NEAR(got.total, Vec2(-0.5, -21), tol(r))
       << input(r)
-      << hint(
-             "an obstacle the particle is not inside (depth <= 0) adds nothing: "
-             "check the depth before adding k_r d n");
+      << totalHint(got, r,
+                   "an obstacle the particle is not inside (depth <= 0) adds nothing: "
+                   "check the depth before adding k_r d n");
 }
 
 }  // namespace
