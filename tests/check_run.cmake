@@ -8,6 +8,7 @@ cmake_minimum_required(VERSION 3.25)
 # missed by; tests/support/comparisons.h) must be at least MIN_MARGIN.
 string(REPLACE "," ";" fail "${FAIL}")
 string(REPLACE "," ";" pass "${PASS}")
+set(ENV{A6_MARGINS} 1)  # the margin lines of the summary (tests/support/summary.h)
 execute_process(COMMAND ${BINARY} --gtest_brief=1 OUTPUT_VARIABLE out ERROR_VARIABLE err
                 RESULT_VARIABLE rc TIMEOUT 300)
 string(REGEX MATCH "A6-SUMMARY[^\n]*" summary "${out}")

@@ -134,15 +134,15 @@ TEST(Task2Forces, GravityIsProportionalToMass) {
 }
 
 TEST(Task2Forces, GravityFollowsGInAnyDirection) {
+  ManyInputs directions("directions of g");
   for (int k = 0; k < 8; ++k) {
     const double angle = 2 * M_PI * k / 8 + 0.1;
     Environment env = quiet();
     env.gravity = 3.7 * Vec2(std::cos(angle), std::sin(angle));
     const auto r = request(particle(Vec2(1, -2), Vec2(0.5, 0.5), 1.7), env);
-    EXPECT_VEC_NEAR(forcesOf(r).gravity, 1.7 * env.gravity, tol(r))
-        << input(r) << hint("use the whole vector g (both components), not just its y component");
-    if (HasFailure()) break;  // the first failure says enough
+    directions.expectNear(forcesOf(r).gravity, 1.7 * env.gravity, tol(r), input(r));
   }
+  directions.report(hint("use the whole vector g (both components), not just its y component"));
 }
 
 // Buoyancy --------------------------------------------------------------------------------------
@@ -188,6 +188,7 @@ TEST(Task2Forces, NoBuoyancyAtAirTemperature) {
 // Drag ------------------------------------------------------------------------------------------
 
 TEST(Task2Forces, DragOpposesVelocityInAnyDirection) {
+  ManyInputs velocities("velocities (2 k_d, 12 directions)");
   for (const double kd : {0.7, 2.0}) {
     for (int k = 0; k < 12; ++k) {
       const double angle = 2 * M_PI * k / 12 + 0.3;
@@ -195,15 +196,12 @@ TEST(Task2Forces, DragOpposesVelocityInAnyDirection) {
       env.drag = kd;
       const Vec2 v = 2.5 * Vec2(std::cos(angle), std::sin(angle));
       const auto r = request(particle(Vec2(0.2, 0.1), v, 1.5), env);
-      EXPECT_VEC_NEAR(forcesOf(r).drag, -kd * v, tol(r))
-          << input(r)
-          << hint(
-                 "drag is -k_d v: against the velocity, proportional to it (not to "
-                 "the mass, not to the speed squared)");
-      if (HasFailure()) break;  // the first failure says enough
+      velocities.expectNear(forcesOf(r).drag, -kd * v, tol(r), input(r));
     }
-    if (HasFailure()) break;
   }
+  velocities.report(
+      hint("drag is -k_d v: against the velocity, proportional to it (not to the "
+           "mass, not to the speed squared)"));
 }
 
 // Repulsion -------------------------------------------------------------------------------------
@@ -229,18 +227,18 @@ TEST(Task2Forces, RepulsionFollowsADiagonalNormal) {
 TEST(Task2Forces, NoRepulsionOutsideOrOnTheSurface) {
   Environment env = quiet();
   env.repulsion = 1000;
+  ManyInputs contacts("contacts (3 depths, 2 normals)");
   for (const double depth : {-0.3, -1e-6, 0.0}) {
     for (const Vec2& n : {Vec2(0, 1), Vec2(-0.8, 0.6)}) {
       const auto r = request(particle(Vec2(0, 0)), env, Contact{depth, n});
-      EXPECT_VEC_NEAR(forcesOf(r).repulsion, Vec2(0, 0), tol(r))
-          << input(r)
-          << hint(
-                 "repulsion acts only while the particle is inside (depth > 0); "
-                 "outside, a negative depth would pull it into the obstacle");
-      if (HasFailure()) break;  // the first failure says enough
+      // Relative to the force the depth would give if it counted.
+      contacts.expectNear(forcesOf(r).repulsion, Vec2(0, 0),
+                          relativeTo(env.repulsion * std::abs(depth)), input(r));
     }
-    if (HasFailure()) break;
   }
+  contacts.report(
+      hint("repulsion acts only while the particle is inside (depth > 0); outside, "
+           "a negative depth would pull it into the obstacle"));
 }
 
 // externalForce ---------------------------------------------------------------------------------

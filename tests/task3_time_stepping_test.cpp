@@ -65,11 +65,12 @@ std::string input(const SimulateRequest& r) {
   out << "; " << r.springs.size() << " spring(s)";
   if (!r.springs.empty()) {
     const SpringData& s = r.springs[0];
-    out << " (first: " << s.i << "-" << s.j << ", l0=" << s.restLength << ", ks=" << s.ks
-        << ", kd=" << s.kd << ")";
+    out << " (first: " << s.i << "-" << s.j << ", l0=" << num(s.restLength) << ", ks=" << num(s.ks)
+        << ", kd=" << num(s.kd) << ")";
   }
-  out << "; g=" << str(r.env.gravity) << ", k_d=" << r.env.drag << ", k_r=" << r.env.repulsion
-      << "; " << r.frames << " frame(s) of " << r.frameDt << " s, "
+  out << "; g=" << str(r.env.gravity) << ", k_d=" << num(r.env.drag)
+      << ", k_r=" << num(r.env.repulsion) << "; " << r.frames << " frame(s) of " << num(r.frameDt)
+      << " s, "
       << (r.stepOnly ? "step(frameDt) per frame"
                      : "advance(frameDt, " + std::to_string(r.substeps) + ") per frame");
   return out.str();
@@ -293,9 +294,9 @@ TEST(Task3TimeStepping, OscillatorPeriodMatchesTheDiscreteFormula) {
     tPrev = t;
   }
   ASSERT_GE(crossings.size(), 3u) << currentTask() << ": the mass crossed its rest position "
-                                  << crossings.size() << " time(s) in " << r.frames * h
-                                  << " s; expected about 4 oscillations of " << expected << " s; "
-                                  << input(r)
+                                  << crossings.size() << " time(s) in " << num(r.frames * h)
+                                  << " s; expected about 4 oscillations of " << num(expected)
+                                  << " s; " << input(r)
                                   << hint("the spring should make the particle oscillate");
   const double period = (crossings.back() - crossings.front()) / (crossings.size() - 1);
   EXPECT_CLOSE(period, expected, modelError(h, expected))
@@ -326,13 +327,13 @@ TEST(Task3TimeStepping, UndampedEnergyStaysBounded) {
                                  << input(r)
                                  << hint("the spring should make the particle oscillate");
   EXPECT_LE(highest, 1.08 * e0)
-      << currentTask() << ": the energy (J) grew from " << e0 << " to " << highest << "; "
+      << currentTask() << ": the energy (J) grew from " << num(e0) << " to " << num(highest) << "; "
       << input(r)
       << hint(
              "growing energy is the signature of explicit Euler: update v first, "
              "then x with the NEW v");
   EXPECT_GE(lowest, 0.92 * e0)
-      << currentTask() << ": the energy (J) fell from " << e0 << " to " << lowest
+      << currentTask() << ": the energy (J) fell from " << num(e0) << " to " << num(lowest)
       << " without any damping; " << input(r)
       << hint("with no damping the energy must not decay: v += f/m dt, x += v dt, nothing more");
 }
@@ -348,16 +349,17 @@ TEST(Task3TimeStepping, DampedEnergyDecreases) {
   const double e0 = previous;
   for (std::size_t k = 0; k < result.states.size(); ++k) {
     const double e = oscillatorEnergy(result.states[k], ks);
-    EXPECT_LT(e, previous) << currentTask() << ": energy (J) " << e
+    EXPECT_LT(e, previous) << currentTask() << ": energy (J) " << num(e)
                            << " at t = " << result.recordedFrames[k] * h << " s, one period after "
-                           << previous << "; " << input(r)
+                           << num(previous) << "; " << input(r)
                            << hint("a damped spring must lose energy: check the integration order");
     previous = std::isfinite(e) ? e : INFINITY;
     if (HasFailure()) break;  // the first failure says enough
   }
-  EXPECT_LT(previous, 0.5 * e0) << currentTask() << ": after " << r.frames * h << " s the energy "
-                                << previous << " J is not below half of the initial " << e0
-                                << " J; " << input(r);
+  EXPECT_LT(previous, 0.5 * e0) << currentTask() << ": after " << num(r.frames * h)
+                                << " s the energy " << num(previous)
+                                << " J is not below half of the initial " << num(e0) << " J; "
+                                << input(r);
 }
 
 // Conservation ----------------------------------------------------------------------------------
@@ -563,7 +565,7 @@ TEST(Task3TimeStepping, StiffSpringExplodesWithOneSubstepAndHoldsWithTen) {
   const double u1 = stretch(exploded.states.back());
   EXPECT_FALSE(std::isfinite(u1) && std::abs(u1) < 100 * u0)
       << currentTask() << ": with omega h = 2.5 symplectic Euler must blow up, but after "
-      << one.frames << " frames the stretch is " << u1 << " m; " << input(one)
+      << one.frames << " frames the stretch is " << num(u1) << " m; " << input(one)
       << hint("advance(frameDt, 1) is one step of the whole frameDt");
   const double bound = 2 * u0 / std::sqrt(4 - 0.25 * 0.25);
   auto within = [&](const std::vector<Particle>& state) {
@@ -573,8 +575,8 @@ TEST(Task3TimeStepping, StiffSpringExplodesWithOneSubstepAndHoldsWithTen) {
   for (const auto& state : held.states) {
     const double u = stretch(state);
     ASSERT_TRUE(within(state)) << currentTask()
-                               << ": with 10 substeps (omega h = 0.25) the stretch reached " << u
-                               << " m, more than " << bound << " m; " << input(ten)
+                               << ": with 10 substeps (omega h = 0.25) the stretch reached "
+                               << num(u) << " m, more than " << num(bound) << " m; " << input(ten)
                                << substepHint(ten, within);
   }
 }
@@ -666,7 +668,7 @@ TEST(Task3TimeStepping, StiffClothExplodesWithOneSubstepAndHoldsWithTen) {
   const double d10 = farthest(held.states.back());
   EXPECT_GT(d1, 10 * size) << currentTask() << ": with 1 substep of 1/60 s (omega h >> 2) the "
                            << "stiff cloth should explode, but its farthest particle moved only "
-                           << d1 << " m; " << input(one)
+                           << num(d1) << " m; " << input(one)
                            << hint("advance(frameDt, 1) is one step of the whole frameDt");
   if (d10 > 2 * size) {
     ADD_FAILURE() << currentTask() << ": with 10 substeps the stiff cloth should hold, but a "

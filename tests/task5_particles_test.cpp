@@ -48,8 +48,9 @@ std::string input(const EmitterSpec& s, std::uint64_t seed, int count) {
   out << "input: " << count << " particles from emitParticle with seed " << seed
       << ", EmitterSpec{position=" << str(s.position) << ", radius=" << s.radius
       << ", velocity=" << str(s.velocity) << ", velocitySpread=" << s.velocitySpread
-      << ", mass=" << s.mass << ", temperature=[" << s.temperatureMin << ", " << s.temperatureMax
-      << "], lifetime=[" << s.lifetimeMin << ", " << s.lifetimeMax << "]}";
+      << ", mass=" << num(s.mass) << ", temperature=[" << num(s.temperatureMin) << ", "
+      << num(s.temperatureMax) << "], lifetime=[" << num(s.lifetimeMin) << ", "
+      << num(s.lifetimeMax) << "]}";
   return out.str();
 }
 
@@ -59,12 +60,6 @@ harness::ParticlesResult emit(const EmitterSpec& spec, std::uint64_t seed, int c
   request.seed = seed;
   request.count = count;
   return student().emit(request);
-}
-
-std::string num(double x) {
-  std::ostringstream out;
-  out << std::setprecision(10) << x;
-  return out.str();
 }
 
 double mean(const std::vector<double>& xs) {
@@ -350,10 +345,11 @@ Particle particle(Vec2 x, Vec2 v, double m, double temperature = 293.15, double 
 
 std::string input(const harness::ParticleRunRequest& r) {
   std::ostringstream out;
-  out << "input: " << r.steps << " update(dt = " << r.dt << ") with emitter rate " << r.emitter.rate
-      << ", gravity " << str(r.env.gravity) << ", buoyancy " << r.env.buoyancy << ", drag "
-      << r.env.drag << ", T_air " << r.env.airTemperature << ", coolingRate " << r.coolingRate;
-  if (!r.env.planes.empty()) out << ", a floor y >= 0 with repulsion " << r.env.repulsion;
+  out << "input: " << r.steps << " update(dt = " << num(r.dt) << ") with emitter rate "
+      << r.emitter.rate << ", gravity " << str(r.env.gravity) << ", buoyancy "
+      << num(r.env.buoyancy) << ", drag " << num(r.env.drag) << ", T_air "
+      << num(r.env.airTemperature) << ", coolingRate " << num(r.coolingRate);
+  if (!r.env.planes.empty()) out << ", a floor y >= 0 with repulsion " << num(r.env.repulsion);
   out << ", " << r.initial.size() << " initial particles";
   for (std::size_t k = 0; k < r.initial.size() && k < 3; ++k) {
     out << (k ? ", " : ": ") << str(r.initial[k]) << " T=" << r.initial[k].temperature
@@ -542,8 +538,8 @@ TEST(Task5Particles, CoolingApproachesTheAirWithoutOvershoot) {
       for (int k = 0; k < 2; ++k) {
         EXPECT_CLOSE(result.particles[k].temperature, air,
                      modelError(0.01 * std::abs(T0[k] - air), std::abs(T0[k] - air)))
-            << "temperature after 2.5 s (coolingRate " << kc << "/s) from " << T0[k] << " K, "
-            << input(r) << hint("T approaches T_air like exp(-coolingRate t)");
+            << "temperature after 2.5 s (coolingRate " << num(kc) << "/s) from " << num(T0[k])
+            << " K, " << input(r) << hint("T approaches T_air like exp(-coolingRate t)");
       }
     }
   }

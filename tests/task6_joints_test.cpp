@@ -158,13 +158,13 @@ TEST(Task6Joints, PendulumPeriodMatchesThePhysicalPendulum) {
   }
   ASSERT_GE(crossings.size(), 5u)
       << currentTask() << ": the bob crossed below the pivot " << crossings.size() << " times in "
-      << steps * kDt << " s; a pendulum of period " << expected << " s crosses 7 times. "
+      << num(steps * kDt) << " s; a pendulum of period " << num(expected) << " s crosses 7 times. "
       << built("pendulum", r) << "\n  bob at the end: " << str(r.poses.back()[0].position)
       << hint("the bob must swing about the pivot: createHinge(world, ground, bob, pivot)");
   const double period = 2 * (crossings.back() - crossings.front()) / (crossings.size() - 1);
   EXPECT_CLOSE(period, expected, relTol(expected, 0.01))
-      << "input: pendulum, m=" << m << " kg, I_cm=" << r.bodies[0].inertia << " kg m², L=" << L
-      << " m, θ0=" << theta0 << " rad"
+      << "input: pendulum, m=" << num(m) << " kg, I_cm=" << r.bodies[0].inertia << " kg m², L=" << L
+      << " m, θ0=" << num(theta0) << " rad"
       << hint(
              "the period of a hinged bob is fixed by the pivot: check the hinge's anchor is the "
              "pivot (world point), not the bob's centre");
@@ -185,7 +185,7 @@ TEST(Task6Joints, HangingBobFeelsMinusMTimesGravityAndStaysAtRest) {
   const Vec2 expected = -m * kGravity;
   EXPECT_VEC_NEAR(r.joints[0].reactionForce, expected,
                   modelError(0.01 * expected.norm(), expected.norm()))
-      << "input: hanging bob, m=" << m << " kg, gravity " << str(kGravity)
+      << "input: hanging bob, m=" << num(m) << " kg, gravity " << str(kGravity)
       << ", reaction force on the bob (GetReactionForce) after " << steps << " steps"
       << hint("at rest the hinge carries the bob's whole weight: check the anchor is the pivot");
   const Vec2 start = kPivot - Vec2(0, p::kPendulumLength);
@@ -267,11 +267,11 @@ TEST(Task6Joints, RopeGoesTautButNeverStretches) {
     }
   }
   EXPECT_LE(longest, p::kRopeMaxLength + kSlop)
-      << currentTask() << ": longest pivot-bob distance " << longest << " m at step " << at
+      << currentTask() << ": longest pivot-bob distance " << num(longest) << " m at step " << at
       << ", rope max length " << p::kRopeMaxLength << " m. " << built("rope", r)
       << hint("maxLength is the rope's length: the bob must never get farther than that");
   EXPECT_GE(longest, p::kRopeMaxLength - kSlop)
-      << currentTask() << ": longest pivot-bob distance " << longest << " m in " << steps
+      << currentTask() << ": longest pivot-bob distance " << num(longest) << " m in " << steps
       << " steps, rope max length " << p::kRopeMaxLength << " m. " << built("rope", r)
       << hint(
              "the falling bob must pull the rope taut: maxLength = the rope's length, not "
@@ -324,19 +324,20 @@ TEST(Task6Joints, BridgeHoldsTheLoad) {
     lowestLoad = std::min(lowestLoad, r.poses[s][n].position.y());
   }
   EXPECT_GE(lowest, 0.0)
-      << currentTask() << ": lowest plank centre y=" << lowest << " m (the bridge hangs at y=1)"
+      << currentTask() << ": lowest plank centre y=" << num(lowest)
+      << " m (the bridge hangs at y=1)"
       << hint("a hinged bridge sags, it does not collapse: check every hinge's anchor");
   EXPECT_GE(lowestLoad, 0.3)
-      << currentTask() << ": lowest load y=" << lowestLoad << " m, dropped from y=2"
+      << currentTask() << ": lowest load y=" << num(lowestLoad) << " m, dropped from y=2"
       << hint("the load must land on the bridge: check the planks are hinged to each other");
   const std::vector<harness::BodyPose>& last = r.poses.back();
   const double middle = std::max(last[n / 2 - 1].position.y(), last[n / 2].position.y());
-  EXPECT_LT(middle, 0.99) << currentTask() << ": middle planks at y=" << middle << " m after "
+  EXPECT_LT(middle, 0.99) << currentTask() << ": middle planks at y=" << num(middle) << " m after "
                           << steps << " steps, the bridge was built at y=1"
                           << hint("the loaded bridge must sag");
   EXPECT_GT(last[n].position.y(), middle)
-      << currentTask() << ": load at " << str(last[n].position) << ", middle planks at y=" << middle
-      << hint("the load must rest on top of the bridge");
+      << currentTask() << ": load at " << str(last[n].position)
+      << ", middle planks at y=" << num(middle) << hint("the load must rest on top of the bridge");
 }
 
 // Piston --------------------------------------------------------------------------------------
@@ -395,12 +396,12 @@ TEST(Task6Joints, PistonsStopAtTheirLimits) {
       }
     }
     EXPECT_LE(sign * farthest, sign * limit[k] + kSlop)
-        << currentTask() << ": piston " << k << " reached translation " << farthest << " m at step "
-        << at << ", its limit is " << limit[k] << " m. " << built("piston", r)
+        << currentTask() << ": piston " << k << " reached translation " << num(farthest)
+        << " m at step " << at << ", its limit is " << num(limit[k]) << " m. " << built("piston", r)
         << hint("enableLimit = true with lowerTranslation and upperTranslation stops the piston");
     const double reached = (j.anchorB - j.anchorA).y();
     EXPECT_CLOSE(reached, limit[k], inScene(kSlop))
-        << "piston " << k << " translation after " << steps << " steps (" << steps * kDt
+        << "piston " << k << " translation after " << steps << " steps (" << num(steps * kDt)
         << " s), driven at " << sign * p::kPistonSpeed << " m/s. " << built("piston", r)
         << hint("the motor (enableMotor, motorSpeed, maxMotorForce) drives it to the limit");
   }
@@ -457,15 +458,15 @@ TEST(Task6Joints, CarDrivesForwardUprightOnItsSuspension) {
   const Vec2 start = r.poses[0][0].position - kDt * r.poses[0][0].velocity;
   const double travel = r.poses.back()[0].position.x() - start.x();
   EXPECT_GE(travel, 3.0)
-      << currentTask() << ": the chassis moved " << travel << " m along x in " << steps * kDt
-      << " s. " << built("car", r)
+      << currentTask() << ": the chassis moved " << num(travel) << " m along x in "
+      << num(steps * kDt) << " s. " << built("car", r)
       << hint(
              "motorSpeed < 0 turns the wheels clockwise, which rolls the car to +x; the "
              "motor needs enableMotor and maxMotorTorque");
   for (int s = 0; s < steps; ++s) {
     const harness::BodyPose& chassis = r.poses[s][0];
     ASSERT_LT(std::abs(chassis.angle), 0.5)
-        << currentTask() << ": chassis angle " << chassis.angle << " rad at step " << s + 1
+        << currentTask() << ": chassis angle " << num(chassis.angle) << " rad at step " << s + 1
         << hint("the car must stay upright: check the suspension's spring (b2LinearStiffness)");
     const double c = std::cos(chassis.angle), sn = std::sin(chassis.angle);
     for (int k = 0; k < 2; ++k) {
@@ -586,8 +587,8 @@ TEST(Task6Joints, MouseDragPullsTheBoxToTheTarget) {
       << currentTask() << ": beginDrag at " << str(grab) << " returned no joint"
       << hint("beginDrag must create a b2MouseJoint and return it");
   EXPECT_VEC_NEAR(r.poses.back()[0].position, target, inScene(0.05))
-      << "box after " << steps * kDt << " s of a drag grabbed at " << str(grab) << " and moved to "
-      << str(target) << "; " << describe(r, r.dragJoints[0])
+      << "box after " << num(steps * kDt) << " s of a drag grabbed at " << str(grab)
+      << " and moved to " << str(target) << "; " << describe(r, r.dragJoints[0])
       << hint(
              "moveDrag must call joint->SetTarget(target); beginDrag needs maxForce, "
              "stiffness and damping set, and must wake the body");
@@ -619,8 +620,8 @@ TEST(Task6Joints, MouseJointIsDestroyedWhenTheDragEnds) {
         << hint("endDrag must destroy the joint: world.DestroyJoint(joint); joint = nullptr");
   }
   const double held = r.poses[69][0].position.y(), released = r.poses[99][0].position.y();
-  EXPECT_LT(released, held - 1.0) << currentTask() << ": box at y=" << held
-                                  << " m when released (after 70 steps), at y=" << released
+  EXPECT_LT(released, held - 1.0) << currentTask() << ": box at y=" << num(held)
+                                  << " m when released (after 70 steps), at y=" << num(released)
                                   << " m 0.5 s later"
                                   << hint("once the drag ends nothing may hold the box");
 }

@@ -133,6 +133,21 @@ void expectCompleted(const Graded& g) {
   EXPECT_EQ(g.results["extra_data"]["errors"], json::array()) << summary(g);
 }
 
+// What a student reads (each item's output, the overall output) names no folder of the grading
+// machine: not its scratch folder, not the source tree, not the output folder.
+void expectNoGradingPaths(const Graded& g, const fs::path& dir) {
+  std::vector<std::string> texts = {g.results.value("output", "")};
+  for (const json& t : g.results["tests"]) texts.push_back(t.value("output", ""));
+  for (const std::string& text : texts) {
+    for (const std::string& path :
+         {fs::temp_directory_path().string() + "/", kSource.string(), dir.string()}) {
+      EXPECT_EQ(text.find(path), std::string::npos)
+          << "a student-visible output names " << path << ":\n"
+          << text.substr(0, 3000);
+    }
+  }
+}
+
 // The wrong versions are prepared in staging.h (batch_test.cpp grades them in a batch).
 fs::path stageWrong(const std::string& name, const fs::path& dir) {
   return a6::test::staging::stageWrong(dir / "submission", name);
@@ -196,6 +211,7 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
   const Graded g = grade(stageWrong(name, dir), dir / "out");
   expectCompleted(g);
   if (HasFatalFailure()) return;
+  expectNoGradingPaths(g, dir);
   const auto got = perTask(g.results, false), full = perTask(g.results, true);
   std::ostringstream table;
   for (const auto& [task, points] : full) {

@@ -80,7 +80,7 @@ std::string toleranceText(const Tolerance& tol) {
   if (recordComparison(largest, tol)) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure()
          << currentTask() << ": " << what << "\n  expected: " << str(expected)
-         << "\n  actual:   " << str(actual) << "\n  " << toleranceText(tol) << "\n  ";
+         << "\n  actual:   " << str(actual) << "\n  " << toleranceText(tol);
 }
 
 ::testing::AssertionResult compareScalar(const char* what, double actual, double expected,
@@ -90,7 +90,7 @@ std::string toleranceText(const Tolerance& tol) {
   if (recordComparison(std::abs(diff), tol)) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure()
          << currentTask() << ": " << what << "\n  expected: " << num(expected)
-         << "\n  actual:   " << num(actual) << "\n  " << toleranceText(tol) << "\n  ";
+         << "\n  actual:   " << num(actual) << "\n  " << toleranceText(tol);
 }
 
 }  // namespace
@@ -112,7 +112,9 @@ std::string toleranceText(const Tolerance& tol) {
 bool ManyInputs::record(const ::testing::AssertionResult& result, const std::string& input) {
   ++total_;
   if (result) return true;
-  if (failed_++ == 0) first_ = std::string(result.message()) + input;
+  if (failed_++ == 0) {
+    first_ = std::string(result.message()) + (input.rfind('\n', 0) == 0 ? "" : "\n  ") + input;
+  }
   return false;
 }
 
@@ -142,7 +144,7 @@ void ManyInputs::report(const std::string& hintText) {
     more = "\n  (" + std::to_string(failed_ - 1) + " more of the " + std::to_string(total_) + " " +
            what_ + " failed too; this is the first)";
   }
-  ADD_FAILURE() << first_ << more << hintText;
+  ADD_FAILURE_AT(file_, line_) << first_ << more << hintText;
 }
 
 ComparisonLog comparisonsOf(const ::testing::TestInfo& check) {

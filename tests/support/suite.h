@@ -77,7 +77,10 @@ inline Tolerance modelError(double absolute, double scale) {
 ///   inputs.report(hint("..."));   // or let it go out of scope
 class ManyInputs {
  public:
-  explicit ManyInputs(std::string what) : what_(std::move(what)) {}
+  /// The failure is reported at the line that made this object (the check's own line).
+  explicit ManyInputs(std::string what, const char* file = __builtin_FILE(),
+                      int line = __builtin_LINE())
+      : what_(std::move(what)), file_(file), line_(line) {}
   ManyInputs(const ManyInputs&) = delete;
   ManyInputs& operator=(const ManyInputs&) = delete;
   ~ManyInputs() { report(""); }
@@ -95,6 +98,8 @@ class ManyInputs {
  private:
   bool record(const ::testing::AssertionResult& result, const std::string& input);
   std::string what_;
+  const char* file_;
+  int line_;
   std::string first_;
   int total_ = 0, failed_ = 0;
   bool reported_ = false;

@@ -1,6 +1,8 @@
 // The per-task summary every physics-suite main prints at the end: a table for people and
 // machine-readable lines for the checks (tests/check_run.cmake):
 //   A6-SUMMARY 1:<passed>:<failed> 2:<passed>:<failed> ... 6:<passed>:<failed>
+// and, when the environment has A6_MARGINS=1 (the fairness checks), the numbers of comparisons.h:
+//   A6-CHECK-MARGIN <check> <margin>                                (each failed check)
 //   A6-MARGIN 1:<smallest margin of a failed check, or none> ...   (comparisons.h)
 //   A6-CLOSEST 1:<largest difference / tolerance of a passed exact comparison> ...
 //   A6-AGREEMENT 1:<largest relative difference of a passed exact comparison> ...
