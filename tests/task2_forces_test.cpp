@@ -72,6 +72,9 @@ std::string totalHint(const harness::ForcesResult& got, const harness::ForcesReq
       {"buoyancy (b (T - T_air) (0, 1))", got.buoyancy,
        env.buoyancy * (p.temperature - env.airTemperature) * Vec2(0, 1)},
       {"drag (-k_d v)", got.drag, -env.drag * p.v},
+      {"repulsion for the contact given (k_r d n while d > 0, zero otherwise)", got.repulsion,
+       r.contact.depth > 0 ? Vec2(env.repulsion * r.contact.depth * r.contact.normal)
+                           : Vec2(Vec2::Zero())},
   };
   for (const auto& part : parts) {
     if (!finite(part.actual) ||

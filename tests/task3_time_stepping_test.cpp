@@ -515,6 +515,12 @@ std::string substepHint(const SimulateRequest& r,
   steps.frames = r.frames * r.substeps;
   steps.recordEvery = steps.frames;
   const SimulateResult stepped = student().simulate(steps);
+  if (!stepped.ok() || stepped.states.empty()) {
+    return hint(
+        "advance(frameDt, n) must take n steps of frameDt / n, and each step must be "
+        "symplectic Euler (n calls of step(frameDt / n) could not be run to tell which: " +
+        (stepped.ok() ? std::string("no state") : stepped.error) + ")");
+  }
   if (stepped.ok() && !stepped.states.empty() && holds(stepped.states.back())) {
     return hint(
         "n calls of step(frameDt / n) hold, advance(frameDt, n) does not: advance must "

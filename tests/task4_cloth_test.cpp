@@ -116,7 +116,9 @@ PairSet expectedPairs(int n, SpringType t) {
 
 // The cloth's part of what the student's buildCloth made in a system that already held a
 // prelude (cloth_result.h), indices relative to base.
-harness::ClothResult build(const ClothSpec& spec) { return clothPart(student().buildCloth(spec)); }
+harness::ClothResult build(const ClothSpec& spec) {
+  return clothPart(student().buildCloth(spec), spec.n);
+}
 
 // Stops the check when buildCloth failed; addSpring's exception (an index outside the system,
 // a spring from a particle to itself) is a grid that reaches outside itself, said in words.

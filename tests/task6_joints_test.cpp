@@ -541,22 +541,22 @@ TEST(Task6Joints, MouseJointIsAFiveHertzSpringWithDampingRatio07) {
 }
 
 TEST(Task6Joints, MouseDragWakesASleepingBody) {
-  // The hanging bob rests below its hinge until Box2D puts it to sleep; a drag begun then (at its
-  // centre, the target never moved) must wake it, or the joint does nothing until the mouse
-  // moves. (Not the box on the floor: a joint to the ground stops the floor's contact, and that
-  // wakes the box anyway.)
+  // The box rests on the floor (a static body of its own) until Box2D puts it to sleep; a drag
+  // begun then (at its centre, the target never moved) must wake it, or the joint does nothing
+  // until the mouse moves. The scene runs no joint of the student's before the drag.
   const int sleepy = 150;  // 2.5 s: Box2D sleeps a body after 0.5 s at rest
-  const Box2DResult rest = runScene("hanging", sleepy);
+  const Box2DResult rest = runScene("mouse_drag", sleepy);
   A6_ASSERT_RAN(rest);
   ASSERT_FALSE(rest.poses.empty() || rest.poses.back().empty());
   ASSERT_FALSE(rest.poses.back()[0].awake)
-      << "the hanging bob should be asleep after " << sleepy << " steps";
+      << "the box should be asleep after " << sleepy << " steps";
   const Vec2 grab = rest.poses.back()[0].position;
-  const Box2DResult r = runScene("hanging", sleepy + 1, {{DragEvent::Kind::Begin, sleepy, grab}});
+  const Box2DResult r =
+      runScene("mouse_drag", sleepy + 1, {{DragEvent::Kind::Begin, sleepy, grab}});
   A6_ASSERT_RAN(r);
   ASSERT_EQ(r.dragJoints.size(), 1u) << currentTask() << ": beginDrag returned no joint";
   EXPECT_TRUE(r.poses.back()[0].awake)
-      << currentTask() << ": a drag begun on the sleeping bob at " << str(grab) << " left it asleep"
+      << currentTask() << ": a drag begun on the sleeping box at " << str(grab) << " left it asleep"
       << hint("beginDrag must wake the body: body->SetAwake(true)");
 }
 

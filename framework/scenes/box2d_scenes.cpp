@@ -57,10 +57,16 @@ b2PolygonShape box(float halfWidth, float halfHeight) {
   return shape;
 }
 
-void addFloor(Box2DScene& scene, float y, float halfWidth) {
+// A floor on a static body of its own, not the ground the mouse joint hangs from: a joint to
+// the ground turns off the ground's contacts with its body (collideConnected is false), which
+// would let a dragged box fall through the floor and would wake it whatever beginDrag did.
+void addFloorBody(Box2DScene& scene, float y, float halfWidth) {
+  b2BodyDef def;
+  def.type = b2_staticBody;
+  b2Body* floor = scene.world->CreateBody(&def);
   b2EdgeShape edge;
   edge.SetTwoSided(b2Vec2(-halfWidth, y), b2Vec2(halfWidth, y));
-  scene.ground->CreateFixture(&edge, 0.0f);
+  floor->CreateFixture(&edge, 0.0f);
 }
 
 // A small bob on a hinge, released from rest at `angle` from the vertical.
@@ -91,8 +97,8 @@ std::unique_ptr<Box2DScene> bridge() {
   b2Body* previous = scene->ground;
   for (int k = 0; k < kBridgePlanks; ++k) {
     const float left = x0 + 2 * halfLength * k;
-    b2Body* plank = addBody(*scene, "plank" + std::to_string(k),
-                            b2Vec2(left + halfLength, y), box(halfLength, 0.05f), 20.0f, 0.2f);
+    b2Body* plank = addBody(*scene, "plank" + std::to_string(k), b2Vec2(left + halfLength, y),
+                            box(halfLength, 0.05f), 20.0f, 0.2f);
     createHinge(*scene->world, previous, plank, b2Vec2(left, y));
     previous = plank;
   }
@@ -129,17 +135,17 @@ std::unique_ptr<Box2DScene> car() {
     previous = next;
   }
   b2PolygonShape chassisShape;
-  const b2Vec2 hull[6] = {{-1.5f, -0.5f}, {1.5f, -0.5f}, {1.5f, 0.0f},
+  const b2Vec2 hull[6] = {{-1.5f, -0.5f}, {1.5f, -0.5f},  {1.5f, 0.0f},
                           {0.0f, 0.9f},   {-1.15f, 0.9f}, {-1.5f, 0.2f}};
   chassisShape.Set(hull, 6);
   b2Body* chassis = addBody(*scene, "chassis", b2Vec2(0.0f, 1.0f), chassisShape, 1.0f);
   b2Body* rear = addBody(*scene, "rear_wheel", b2Vec2(-1.0f, 0.35f), circle(0.4f), 1.0f, 0.9f);
   b2Body* front = addBody(*scene, "front_wheel", b2Vec2(1.0f, 0.4f), circle(0.4f), 1.0f, 0.9f);
   const b2Vec2 axis(0.0f, 1.0f);
-  createWheel(*scene->world, chassis, rear, axis, kWheelHertz, kWheelDampingRatio,
-              kCarMotorSpeed, kCarMaxTorque);
-  createWheel(*scene->world, chassis, front, axis, kWheelHertz, kWheelDampingRatio,
-              kCarMotorSpeed, kCarMaxTorque);
+  createWheel(*scene->world, chassis, rear, axis, kWheelHertz, kWheelDampingRatio, kCarMotorSpeed,
+              kCarMaxTorque);
+  createWheel(*scene->world, chassis, front, axis, kWheelHertz, kWheelDampingRatio, kCarMotorSpeed,
+              kCarMaxTorque);
   scene->dragBody = 0;
   return scene;
 }
@@ -147,7 +153,7 @@ std::unique_ptr<Box2DScene> car() {
 // A box on the floor, for the mouse joint.
 std::unique_ptr<Box2DScene> mouseDrag() {
   auto scene = newScene("mouse_drag");
-  addFloor(*scene, 0.0f, 10.0f);
+  addFloorBody(*scene, 0.0f, 10.0f);
   addBody(*scene, "box", b2Vec2(0.0f, 0.25f), box(0.25f, 0.25f), 5.0f);
   scene->dragBody = 0;
   return scene;

@@ -148,7 +148,7 @@ harness::JointInfo fill(Filler& f, harness::JointInfo*) {
   return i;
 }
 harness::BodyPose fill(Filler& f, harness::BodyPose*) {
-  return {f.vec(), f.number(), f.vec(), f.number()};
+  return {f.vec(), f.number(), f.vec(), f.number(), f.flag()};
 }
 harness::BodyInfo fill(Filler& f, harness::BodyInfo*) {
   harness::BodyInfo b;
@@ -357,6 +357,7 @@ void same(const harness::BodyPose& a, const harness::BodyPose& b, const std::str
   SAME(angle);
   SAME(velocity);
   SAME(angularVelocity);
+  SAME(awake);
 }
 void same(const harness::BodyInfo& a, const harness::BodyInfo& b, const std::string& at) {
   SAME(name);
@@ -700,6 +701,7 @@ TEST(WireResults, EveryResultSurvivesWithEveryField) {
     a.builtJoints = fillList<harness::JointInfo>(f, 1);
     a.jointCounts = {2, 2, 3};
     a.dragJoints = fillList<harness::JointInfo>(f, 1);
+    a.endDragCleared = {1, 0};
     const auto b = wire::decodeRunBox2D(throughText(wire::encodeResult(a)));
     const std::string at = "Box2DResult";
     SAME(error);
@@ -709,6 +711,7 @@ TEST(WireResults, EveryResultSurvivesWithEveryField) {
     SAME(builtJoints);
     SAME(jointCounts);
     SAME(dragJoints);
+    SAME(endDragCleared);
   }
   {
     harness::SceneResult a;

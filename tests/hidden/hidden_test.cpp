@@ -276,7 +276,7 @@ TEST(Task4Hidden, RandomClothSpecsGiveTheGridAndItsSprings) {
     const Tolerance length = relativeTo(spec.size + spec.origin.norm());
 
     // Read relative to base (a builder that forgot base loses Task4Cloth's check of it only).
-    const harness::ClothResult result = clothPart(student().buildCloth(spec));
+    const harness::ClothResult result = clothPart(student().buildCloth(spec), n);
     A6_ASSERT_RAN(result);
     ASSERT_EQ(result.particles.size(), static_cast<std::size_t>((n + 1) * (n + 1)))
         << currentTask() << ": " << in << hint("(n + 1)² particles");
