@@ -90,7 +90,10 @@ if ! grep -q 'Build files have been written' "$work/test.log" || ! grep -q 'test
   fail "scripts/test.sh did not build and run the tests"
 fi
 [ "$test_status" -ne 0 ] || fail "scripts/test.sh passed on the starter: its tests must fail"
-summary=$(grep -m1 '^A6-SUMMARY' "$work/test.log")
+# The whole suite's summary (the per-task entries Task1..Task6 print one each too): the line
+# with the most failing tasks.
+summary=$(grep '^A6-SUMMARY' "$work/test.log" | awk '{n = 0; for (i = 2; i <= NF; i++) {
+  split($i, a, ":"); if (a[3] > 0) n++ } if (n > best) { best = n; line = $0 } } END { print line }')
 if [ -z "$summary" ]; then
   fail "the physics tests printed no per-task summary"
 else
@@ -103,6 +106,16 @@ else
 fi
 grep -q 'Failed.*physics' "$work/test.log" || grep -q 'physics.*Failed' "$work/test.log" ||
   fail "ctest does not list the physics tests as failed"
+
+# The starter files' "Done when" commands: `ctest -R Task1` runs task 1's checks, only those,
+# and fails on the starter; a pattern that matches no test fails too.
+ctest --test-dir build -R Task1 --output-on-failure >"$work/task1.log" 2>&1 &&
+  fail "ctest -R Task1 passed on the starter"
+grep -q 'Task1Spring\.' "$work/task1.log" || fail "ctest -R Task1 ran no task-1 check"
+! grep -q 'Task2Forces\.' "$work/task1.log" || fail "ctest -R Task1 ran task 2's checks too"
+ctest --preset default -R NoSuchTest >"$work/none.log" 2>&1 &&
+  fail "ctest --preset default -R NoSuchTest passed: a run that matches no test must fail"
+pass "ctest -R Task1 runs task 1's checks and fails on the starter; no match fails"
 
 # 4. The local check.
 score_of() { grep -m1 '"score"' "$1" | tr -dc '0-9.'; }
