@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# A student's edit-build-test loop: touch spring.cpp, rebuild, run task 1's tests.
+#
+#   scripts/bench-student-loop.sh [--runs N]      (default 5 runs of each, medians printed)
+#
+# In a student build of its own (a copy of starter/ in a scratch folder, -DA6_STUDENT=<it>):
+#   (a) the README's command: `cmake --build <dir>` (every target: the viewer, the golden tests,
+#       the grader's copy) then `a6_tests --gtest_filter='Task1*'`;
+#   (b) the fast loop: `cmake --build <dir> --target a6_tests` then the same tests;
+#   (c) the baseline, in the same run: the tests alone, with nothing to rebuild.
+# Prints the medians and the ratios (a)/(c), (b)/(c) and (a)/(b). Target (issue 12): the fast
+# loop in at most 2 s on the development machine, under load.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+runs=5
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --runs) runs=$2; shift ;;
+    -h | --help) sed -n '2,12p' "$0"; exit 0 ;;
+    *) echo "bench-student-loop: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/a6-bench-loop.XXXXXX")
+trap 'rm -rf "$scratch"' EXIT
+cp -r starter "$scratch/mine"
+build="$scratch/build"
+echo "bench-student-loop: configuring and building a student build in $build (not timed)"
+cmake -S . -B "$build" -G Ninja -DA6_STUDENT="$scratch/mine" -DA6_WRONG_VERSIONS=OFF \
+  -DA6_BUILD_BENCH=OFF >"$scratch/configure.log" 2>&1 || { tail -20 "$scratch/configure.log"; exit 1; }
+cmake --build "$build" >"$scratch/build.log" 2>&1 || { tail -20 "$scratch/build.log"; exit 1; }
+
+# seconds <command...>: the wall time of one run (the tests fail on the starter: that is fine).
+seconds() {
+  local start end
+  start=$(date +%s.%N)
+  "$@" >/dev/null 2>&1 || true
+  end=$(date +%s.%N)
+  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.4f\n", b - a }'
+}
+median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+tests() { "$build/tests/a6_tests" --gtest_filter='Task1*' --gtest_brief=1; }
+
+full=() fast=() base=()
+for _ in $(seq "$runs"); do
+  touch "$scratch/mine/spring.cpp"
+  full+=("$(seconds bash -c "cmake --build '$build' && '$build/tests/a6_tests' --gtest_filter='Task1*' --gtest_brief=1")")
+  touch "$scratch/mine/spring.cpp"
+  fast+=("$(seconds bash -c "cmake --build '$build' --target a6_tests && '$build/tests/a6_tests' --gtest_filter='Task1*' --gtest_brief=1")")
+  base+=("$(seconds tests)")
+done
+a=$(median "${full[@]}") b=$(median "${fast[@]}") c=$(median "${base[@]}")
+printf 'bench-student-loop: medians of %d runs\n' "$runs"
+printf '  (a) touch spring.cpp, cmake --build (all), run Task1:        %.3f s\n' "$a"
+printf '  (b) touch spring.cpp, cmake --build --target a6_tests, Task1: %.3f s\n' "$b"
+printf '  (c) run Task1 alone (baseline):                               %.3f s\n' "$c"
+awk -v a="$a" -v b="$b" -v c="$c" \
+  'BEGIN { printf "  ratios: (a)/(c) = %.0f, (b)/(c) = %.0f, (a)/(b) = %.2f\n", a / c, b / c, a / b }'
