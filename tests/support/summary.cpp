@@ -21,7 +21,9 @@ bool marginsWanted() {
 
 }  // namespace
 
-TaskSummary::TaskSummary() { margin_.fill(std::numeric_limits<double>::quiet_NaN()); }
+TaskSummary::TaskSummary(bool pointToTasks) : pointToTasks_(pointToTasks) {
+  margin_.fill(std::numeric_limits<double>::quiet_NaN());
+}
 
 void TaskSummary::OnTestEnd(const ::testing::TestInfo& info) {
   const std::string suite = info.test_suite_name();
@@ -78,6 +80,11 @@ void TaskSummary::OnTestProgramEnd(const ::testing::UnitTest&) {
     printLine("A6-AGREEMENT", agreement_);
   }
   std::printf("%d passed, %d failed\n", passed, failed);
+  if (pointToTasks_ && failed > 0) {
+    std::printf(
+        "The failures, task by task: ctest -R Task<N> --output-on-failure, or a6_tests "
+        "--gtest_filter='Task<N>*'\n");
+  }
   std::fflush(stdout);
 }
 

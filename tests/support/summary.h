@@ -17,11 +17,13 @@ namespace a6::test {
 
 class TaskSummary : public ::testing::EmptyTestEventListener {
  public:
-  TaskSummary();
+  /// `pointToTasks`: the run printed no failure itself; the summary says where to see them.
+  explicit TaskSummary(bool pointToTasks = false);
   void OnTestEnd(const ::testing::TestInfo& info) override;
   void OnTestProgramEnd(const ::testing::UnitTest& unitTest) override;
 
  private:
+  bool pointToTasks_ = false;
   std::array<int, 6> passed_{}, failed_{};
   std::array<double, 6> margin_{}, closest_{}, agreement_{};
 };
