@@ -307,7 +307,9 @@ class Collector : public ::testing::EmptyTestEventListener {
     } else {
       current_.passed = result.Passed();
     }
-    current_.agreement = a6::test::comparisonsOf(info).agreement;
+    // Kept only beyond double rounding: the report's float note reads it (comparisons.h).
+    const double agreement = a6::test::comparisonsOf(info).agreement;
+    current_.agreement = agreement > a6::test::kBeyondDoubleRounding ? agreement : 0;
     // Golden-image checks name their images (student, reference, difference) as properties.
     std::string images[3];
     for (int k = 0; k < result.test_property_count(); ++k) {

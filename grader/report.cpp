@@ -100,9 +100,6 @@ std::string itemTitle(const ScoredItem& s) {
          (total == 1 ? " check)" : " checks)");
 }
 
-// Relative differences above this are float rounding, not double's (tests/support/comparisons.h).
-constexpr double kBeyondDoubleRounding = 1e-9;
-
 // The note for an item whose passed checks agree only to float precision (tasks 1-5: Box2D's
 // task 6 is float by design), or "". It costs nothing.
 std::string precisionNote(const ScoredItem& s) {
@@ -111,7 +108,7 @@ std::string precisionNote(const ScoredItem& s) {
   for (const TestOutcome* t : s.tests) {
     if (t->passed) agreement = std::max(agreement, t->agreement);
   }
-  if (!(agreement > kBeyondDoubleRounding)) return "";
+  if (!(agreement > 0)) return "";
   char about[32];
   std::snprintf(about, sizeof about, "1e%d", static_cast<int>(std::lround(std::log10(agreement))));
   return std::string("Note: your values agree with the reference to about ") + about +

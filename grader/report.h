@@ -29,8 +29,8 @@ struct TestOutcome {
   bool passed = false;
   std::string message;  ///< the failure messages (input, expected, actual, hint)
   double seconds = 0;
-  /// The largest relative difference of its exact comparisons (tests/support/comparisons.h):
-  /// about 1e-16 for double arithmetic, 1e-7 for float intermediates.
+  /// The largest relative difference of its exact comparisons (tests/support/comparisons.h)
+  /// when it is beyond double rounding (about 1e-7 for float intermediates), else 0.
   double agreement = 0;
   /// For golden-image checks: paths of the images (student, reference, difference), if any.
   std::vector<std::filesystem::path> images;

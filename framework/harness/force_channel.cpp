@@ -153,8 +153,7 @@ bool answer(const std::vector<double>& r, const ForceModel& models, std::vector<
   return false;
 }
 
-// ---- the probe's side: blocking, whole buffers (writing: wire::writeAll)
-// --------------------------------------------------
+// ---- the probe's side: blocking, whole buffers (it writes with wire::writeAll) ----------------
 
 bool readAll(int fd, void* data, std::size_t n) {
   char* p = static_cast<char*>(data);

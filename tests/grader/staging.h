@@ -112,48 +112,44 @@ inline fs::path stage(const fs::path& dir, const std::string& fixture,
 
 // ---- wrong versions -----------------------------------------------------------------------------
 
-/// Every wrong version under tests/wrong/ (a folder with an EXPECT file), sorted.
-inline std::vector<std::string> wrongVersions() {
+// Variants of the solution: tests/wrong/<name>/ and tests/alternative/<name>/ each hold some of
+// the six files, to be graded in place of the solution's.
+
+/// The folders under tests/<kind>/ (sorted) that hold `marker` ("" for any folder).
+inline std::vector<std::string> variants(const std::string& kind, const std::string& marker) {
   std::vector<std::string> names;
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(kSource / "tests" / "wrong", ec)) {
-    if (fs::exists(entry.path() / "EXPECT")) names.push_back(entry.path().filename().string());
+  for (const auto& entry : fs::directory_iterator(kSource / "tests" / kind, ec)) {
+    if (entry.is_directory() && (marker.empty() || fs::exists(entry.path() / marker))) {
+      names.push_back(entry.path().filename().string());
+    }
   }
   std::sort(names.begin(), names.end());
   return names;
 }
 
-/// The folder a wrong version is graded as: the solution's six files, its own in their place.
-inline fs::path stageWrong(const fs::path& dir, const std::string& name) {
+/// The folder tests/<kind>/<name> is graded as: the solution's six files, its own in their place.
+inline fs::path stageVariant(const fs::path& dir, const std::string& kind,
+                             const std::string& name) {
   fs::create_directories(dir);
   for (const std::string& file : kTaskFiles) {
-    const fs::path wrong = kSource / "tests" / "wrong" / name / file;
-    fs::copy_file(fs::exists(wrong) ? wrong : kSource / "solution" / file, dir / file,
-                  fs::copy_options::overwrite_existing);
-  }
-  return dir;
-}
-
-/// Every correct alternative under tests/alternative/ (a folder), sorted.
-inline std::vector<std::string> alternatives() {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(kSource / "tests" / "alternative", ec)) {
-    if (entry.is_directory()) names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-/// The folder an alternative is graded as: the solution's six files, its own in their place.
-inline fs::path stageAlternative(const fs::path& dir, const std::string& name) {
-  fs::create_directories(dir);
-  for (const std::string& file : kTaskFiles) {
-    const fs::path own = kSource / "tests" / "alternative" / name / file;
+    const fs::path own = kSource / "tests" / kind / name / file;
     fs::copy_file(fs::exists(own) ? own : kSource / "solution" / file, dir / file,
                   fs::copy_options::overwrite_existing);
   }
   return dir;
+}
+
+/// Every wrong version under tests/wrong/ (a folder with an EXPECT file), sorted.
+inline std::vector<std::string> wrongVersions() { return variants("wrong", "EXPECT"); }
+inline fs::path stageWrong(const fs::path& dir, const std::string& name) {
+  return stageVariant(dir, "wrong", name);
+}
+
+/// Every correct alternative under tests/alternative/ (a folder), sorted.
+inline std::vector<std::string> alternatives() { return variants("alternative", ""); }
+inline fs::path stageAlternative(const fs::path& dir, const std::string& name) {
+  return stageVariant(dir, "alternative", name);
 }
 
 /// The tasks a wrong version's EXPECT file names ("fail: 3 4").
