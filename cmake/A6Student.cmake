@@ -10,8 +10,27 @@ set(A6_WARNINGS -Wall -Wextra)
 #   missing from <dir> is taken from the set FALLBACK (which must exist). Sets
 #   A6_<name>_OBJECTS (in the caller's scope) to the six object libraries of the set.
 #   STARTER: the stubs leave parameters unused on purpose; do not warn about that.
+# The headers every task file may use without naming them, precompiled once for all the sets:
+# the same list as the grader kit's (grader/cmake/intake_build.cmake), so that a file builds here
+# exactly when it builds in the grader. A task file then compiles in about 0.4 s instead of 1.1 s.
+set(A6_STUDENT_PCH_HEADERS <Eigen/Core> <algorithm> <cmath> <cstdint> <deque> <functional>
+                           <limits> <vector>)
+
+function(a6_student_pch)
+  if(TARGET a6_student_pch)
+    return()
+  endif()
+  set(source ${CMAKE_BINARY_DIR}/a6_student_pch.cpp)
+  file(GENERATE OUTPUT ${source} CONTENT "// Holds the student files' precompiled header.\n")
+  add_library(a6_student_pch OBJECT ${source})
+  target_link_libraries(a6_student_pch PUBLIC a6_api)
+  target_compile_options(a6_student_pch PRIVATE ${A6_WARNINGS})
+  target_precompile_headers(a6_student_pch PRIVATE ${A6_STUDENT_PCH_HEADERS})
+endfunction()
+
 function(a6_student_set name dir)
   cmake_parse_arguments(ARG "STARTER" "FALLBACK" "" ${ARGN})
+  a6_student_pch()
   set(objects "")
   foreach(file IN LISTS A6_TASK_FILES)
     if(EXISTS "${dir}/${file}.cpp")
@@ -19,6 +38,7 @@ function(a6_student_set name dir)
       add_library(${target} OBJECT "${dir}/${file}.cpp")
       target_link_libraries(${target} PUBLIC a6_api)
       target_compile_options(${target} PRIVATE ${A6_WARNINGS})
+      target_precompile_headers(${target} REUSE_FROM a6_student_pch)
       if(ARG_STARTER)
         target_compile_options(${target} PRIVATE -Wno-unused-parameter)
       endif()

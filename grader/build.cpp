@@ -19,11 +19,13 @@
 #include "build.h"
 
 #include <elf.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -342,6 +344,71 @@ void linkProbe(const Kit& kit, Build& build, std::vector<fs::path>& objects,
   }
   build.linkSeconds = secondsSince(linkStart);
 }
+
+// Whether `uid`/`gid` (no supplementary groups) may read (`want` 4) or search (1) by the bits.
+bool permits(const struct stat& st, uid_t uid, gid_t gid, unsigned want) {
+  const unsigned bits = st.st_uid == uid   ? (st.st_mode >> 6) & 7u
+                        : st.st_gid == gid ? (st.st_mode >> 3) & 7u
+                                           : st.st_mode & 7u;
+  return (bits & want) == want;
+}
+
+// The outermost folder on the way to `path` (or `path` itself) that `uid` may not pass, with its
+// mode and owner: "/root/a6/build (mode 0700, owner uid 0)"; "" when the bits allow it all.
+std::string whatShutsOut(const fs::path& path, uid_t uid, gid_t gid) {
+  fs::path at;
+  for (const fs::path& part : path) {
+    at /= part;
+    struct stat st;
+    if (::stat(at.c_str(), &st) != 0) return "";
+    const bool last = at == path;
+    const unsigned want = S_ISDIR(st.st_mode) ? (last ? 5u : 1u) : 4u;
+    if (!permits(st, uid, gid, want)) {
+      char mode[8];
+      std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(st.st_mode & 07777));
+      return at.string() + " (mode " + mode + ", owner uid " + std::to_string(st.st_uid) + ")";
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string kitUnreadableInSandbox(const Kit& kit, const fs::path& workDir) {
+  if (::geteuid() != 0 || kit.uid == 0) return "";  // the tools run as this user
+  std::vector<std::string> paths;
+  std::error_code ec;
+  const fs::path dir = absoluteClean(kit.dir);
+  paths.push_back(dir.string());
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    paths.push_back(it->path().string());
+  }
+  for (const auto* inputs : {&kit.probeMain, &kit.modelsMain, &kit.linkInputs}) {
+    for (const std::string& input : *inputs) paths.push_back(input);
+  }
+  // One shell in the tools' own sandbox and view tries them all: the first it cannot read.
+  std::vector<std::string> argv = {
+      "/bin/sh", "-c",
+      "for p; do if [ -d \"$p\" ]; then [ -r \"$p\" ] && [ -x \"$p\" ]; else [ -r \"$p\" ]; fi "
+      "|| { printf '%s' \"$p\"; exit 3; }; done",
+      "sh"};
+  argv.insert(argv.end(), paths.begin(), paths.end());
+  const fs::path probeDir = absoluteClean(workDir) / "kit-check";
+  const Exit e = runTool(kit, viewOfTools(kit, probeDir, {}, true), probeDir, argv, Limits{});
+  std::error_code rec;
+  fs::remove_all(probeDir, rec);
+  if (e.ok()) return "";
+  if (e.kind != Exit::Kind::Exited || e.code != 3) return "";  // the tools will say what is wrong
+  const std::string culprit = whatShutsOut(e.output, kit.uid, kit.gid);
+  const bool itself = culprit.rfind(e.output + " (", 0) == 0;
+  return "the sandbox's user (uid " + std::to_string(kit.uid) + ") cannot read " +
+         (itself ? culprit : e.output + (culprit.empty() ? "" : ", shut out by " + culprit)) +
+         ": make the grader's build readable by every user (chmod -R a+rX " +
+         (isWithin(fs::path(e.output), dir) ? dir : fs::path(e.output).parent_path()).string() +
+         ", or build it with umask 022), then grade again";
+}
+
+namespace {
 
 Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& workDirIn,
                           const Limits& compileLimits, int jobs, double budgetSeconds) {

@@ -45,6 +45,12 @@ Kit loadKit(const std::filesystem::path& kitJson);
 /// BUILD/grader/kit.json of the build tree this grader was built in.
 std::filesystem::path defaultKitPath();
 
+/// "" when the compiler and the linker, run as the kit's sandbox user in their sandbox, can read
+/// everything they need of the kit (its folder, the probe's main and link inputs); otherwise one
+/// line naming the folder that shuts the user out, the user, and the fix. A grader problem, never
+/// the submission's: a kit built with umask 077, say.
+std::string kitUnreadableInSandbox(const Kit& kit, const std::filesystem::path& workDir);
+
 struct TaskBuild {
   std::string file;  ///< e.g. "cloth.cpp"
   /// LinkError: it compiled, but the probe linked only with the starter's object in its place

@@ -632,6 +632,9 @@ int grade(const Options& options, const Rubric& rubric) {
     } else if (!kit.ok()) {
       fail("the grader's kit is unusable: " + kit.error);
       unavailable = "the grader could not build your code (a grader problem, not yours)";
+    } else if (const std::string shut = kitUnreadableInSandbox(kit, work); !shut.empty()) {
+      fail(shut);
+      unavailable = "the grader could not build your code (a grader problem, not yours)";
     } else {
       secrets = kit.secrets;
       report.build = buildProbe(kit, report.intake, work / "build", defaultCompileLimits(),

@@ -268,8 +268,9 @@ void closeRange(int lo, int hi, int maxFd) {
             continue;
           }
           for (const std::string& dir : op.chain) {
-            if (lstat(dir.c_str(), &st) != 0 &&
-                (errno != ENOENT || mkdir(dir.c_str(), 0755) != 0)) {
+            if (lstat(dir.c_str(), &st) == 0) continue;
+            // Searchable by the child's user whatever the grader's umask.
+            if (errno != ENOENT || mkdir(dir.c_str(), 0755) != 0 || chmod(dir.c_str(), 0755) != 0) {
               die(kReveal, index);
             }
           }
@@ -496,37 +497,58 @@ void deleteWorkDir(const std::string& dir) {
   fs::remove_all(dir, ec);
 }
 
-// Everything before fork. Returns an error, or "".
-std::string makePlan(const SandboxSpec& spec, Plan& plan) {
-  if (spec.argv.empty() || spec.argv[0].empty() || spec.argv[0][0] != '/') {
-    return "argv[0] must be an absolute path" +
-           (spec.argv.empty() ? std::string() : " (got '" + spec.argv[0] + "')");
-  }
-  plan.root = geteuid() == 0;
-  plan.dropPrivileges = plan.root && spec.uid != 0;
-  plan.uid = spec.uid;
-  plan.gid = spec.gid;
-  plan.parent = getpid();
-  plan.args = spec.argv;
-  plan.envs = spec.env;
-  for (std::string& a : plan.args) plan.argv.push_back(a.data());
-  plan.argv.push_back(nullptr);
-  for (std::string& e : plan.envs) plan.envp.push_back(e.data());
-  plan.envp.push_back(nullptr);
+// Whether `uid`/`gid` (no supplementary groups: the child drops them) may search a folder.
+bool searchableBy(const struct stat& st, uid_t uid, gid_t gid) {
+  if (st.st_uid == uid) return (st.st_mode & S_IXUSR) != 0;
+  if (st.st_gid == gid) return (st.st_mode & S_IXGRP) != 0;
+  return (st.st_mode & S_IXOTH) != 0;
+}
 
-  if (std::string e = prepareWorkDir(spec.workDir, plan); !e.empty()) return e;
-  plan.workDir = fs::absolute(spec.workDir).lexically_normal().string();
-  if (plan.root && spec.workDirTmpfsBytes > 0) {
-    plan.workTmpfs = "size=" + std::to_string(spec.workDirTmpfsBytes) +
-                     ",mode=0700,uid=" + std::to_string(plan.dropPrivileges ? plan.uid : 0) +
-                     ",gid=" + std::to_string(plan.dropPrivileges ? plan.gid : 0);
-  }
+// The paths a child must see whatever is hidden: SandboxSpec::reveal, its work dir, argv[0].
+std::vector<fs::path> revealsOf(const SandboxSpec& spec, const Plan& plan) {
+  std::vector<fs::path> reveals;
+  for (const fs::path& r : spec.reveal) reveals.push_back(canonicalish(r));
+  reveals.push_back(canonicalish(plan.workDir));
+  reveals.push_back(canonicalish(spec.argv[0]));
+  return reveals;
+}
 
-  // Hidden paths and what stays visible inside them.
+// A folder the child's user cannot search (a checkout in /root, mode 0700) would keep it from
+// what lies inside, even bound back in place: the outermost such folder above a revealed path is
+// covered whole, and the reveal rebuilds the way in with searchable folders (childMain).
+std::vector<fs::path> unsearchableAncestors(const std::vector<fs::path>& reveals,
+                                            const Plan& plan) {
+  std::vector<fs::path> covers;
+  for (const fs::path& path : reveals) {
+    fs::path ancestor;
+    for (auto part = path.begin(); part != path.end(); ++part) {
+      ancestor /= *part;
+      if (ancestor == path || ancestor == ancestor.root_path()) continue;
+      struct stat st;
+      if (stat(ancestor.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) break;
+      if (!searchableBy(st, plan.uid, plan.gid)) {
+        if (std::find(covers.begin(), covers.end(), ancestor) == covers.end()) {
+          covers.push_back(ancestor);
+        }
+        break;
+      }
+    }
+  }
+  return covers;
+}
+
+// SandboxSpec::hide and reveal as mount operations, outer paths first; as a non-root user, a
+// note naming what stays readable instead.
+void planMounts(const SandboxSpec& spec, Plan& plan) {
+  const std::vector<fs::path> reveals = revealsOf(spec, plan);
+  std::vector<fs::path> hides;
+  for (const fs::path& h : spec.hide) hides.push_back(canonicalish(h));
+  if (plan.dropPrivileges && !hides.empty()) {
+    for (const fs::path& c : unsearchableAncestors(reveals, plan)) hides.push_back(c);
+  }
   std::vector<fs::path> hidden;
   std::vector<std::string> unreadable;
-  for (const fs::path& h : spec.hide) {
-    const fs::path path = canonicalish(h);
+  for (const fs::path& path : hides) {
     struct stat st;
     if (lstat(path.c_str(), &st) != 0) continue;  // nothing to hide
     if (path == path.root_path()) {
@@ -554,37 +576,61 @@ std::string makePlan(const SandboxSpec& spec, Plan& plan) {
     if (unreadable.size() > 8) note += " and " + std::to_string(unreadable.size() - 8) + " more";
     plan.notes.push_back(note);
   }
-  if (!plan.ops.empty()) {
-    std::vector<fs::path> reveals = spec.reveal;
-    reveals.push_back(plan.workDir);
-    reveals.push_back(spec.argv[0]);
-    for (const fs::path& r : reveals) {
-      const fs::path path = canonicalish(r);
-      if (std::none_of(hidden.begin(), hidden.end(),
-                       [&](const fs::path& h) { return within(path, h); })) {
-        continue;
-      }
-      MountOp op;
-      op.kind = MountOp::Reveal;
-      op.path = path.string();
-      op.depth = depthOf(path);
-      struct stat st;
-      if (stat(path.c_str(), &st) != 0) {
-        plan.notes.push_back("cannot keep " + op.path + " visible: " + errnoText(errno));
-        continue;
-      }
-      op.isDir = S_ISDIR(st.st_mode);
-      for (fs::path a = path.parent_path(); a != a.root_path(); a = a.parent_path()) {
-        op.chain.insert(op.chain.begin(), a.string());
-      }
-      plan.ops.push_back(op);
+  if (plan.ops.empty()) return;
+  for (const fs::path& path : reveals) {
+    if (std::none_of(hidden.begin(), hidden.end(),
+                     [&](const fs::path& h) { return within(path, h); })) {
+      continue;
     }
-    // Outer paths first; at equal depth, hide before revealing.
-    std::stable_sort(plan.ops.begin(), plan.ops.end(), [](const MountOp& a, const MountOp& b) {
-      if (a.depth != b.depth) return a.depth < b.depth;
-      return (a.kind == MountOp::Reveal ? 1 : 0) < (b.kind == MountOp::Reveal ? 1 : 0);
-    });
+    MountOp op;
+    op.kind = MountOp::Reveal;
+    op.path = path.string();
+    op.depth = depthOf(path);
+    struct stat st;
+    if (stat(path.c_str(), &st) != 0) {
+      plan.notes.push_back("cannot keep " + op.path + " visible: " + errnoText(errno));
+      continue;
+    }
+    op.isDir = S_ISDIR(st.st_mode);
+    for (fs::path a = path.parent_path(); a != a.root_path(); a = a.parent_path()) {
+      op.chain.insert(op.chain.begin(), a.string());
+    }
+    plan.ops.push_back(op);
   }
+  // Outer paths first; at equal depth, hide before revealing.
+  std::stable_sort(plan.ops.begin(), plan.ops.end(), [](const MountOp& a, const MountOp& b) {
+    if (a.depth != b.depth) return a.depth < b.depth;
+    return (a.kind == MountOp::Reveal ? 1 : 0) < (b.kind == MountOp::Reveal ? 1 : 0);
+  });
+}
+
+// Everything before fork. Returns an error, or "".
+std::string makePlan(const SandboxSpec& spec, Plan& plan) {
+  if (spec.argv.empty() || spec.argv[0].empty() || spec.argv[0][0] != '/') {
+    return "argv[0] must be an absolute path" +
+           (spec.argv.empty() ? std::string() : " (got '" + spec.argv[0] + "')");
+  }
+  plan.root = geteuid() == 0;
+  plan.dropPrivileges = plan.root && spec.uid != 0;
+  plan.uid = spec.uid;
+  plan.gid = spec.gid;
+  plan.parent = getpid();
+  plan.args = spec.argv;
+  plan.envs = spec.env;
+  for (std::string& a : plan.args) plan.argv.push_back(a.data());
+  plan.argv.push_back(nullptr);
+  for (std::string& e : plan.envs) plan.envp.push_back(e.data());
+  plan.envp.push_back(nullptr);
+
+  if (std::string e = prepareWorkDir(spec.workDir, plan); !e.empty()) return e;
+  plan.workDir = fs::absolute(spec.workDir).lexically_normal().string();
+  if (plan.root && spec.workDirTmpfsBytes > 0) {
+    plan.workTmpfs = "size=" + std::to_string(spec.workDirTmpfsBytes) +
+                     ",mode=0700,uid=" + std::to_string(plan.dropPrivileges ? plan.uid : 0) +
+                     ",gid=" + std::to_string(plan.dropPrivileges ? plan.gid : 0);
+  }
+
+  planMounts(spec, plan);
 
   // Limits.
   const Limits& l = spec.limits;
@@ -1059,6 +1105,9 @@ SandboxView allowOnly(const std::vector<std::filesystem::path>& visible,
     if (std::find(view.hide.begin(), view.hide.end(), p) == view.hide.end()) view.hide.push_back(p);
   }
   view.reveal = {"/dev/null", "/dev/zero", "/dev/urandom"};
+  // Kept in reveal too: where a folder above one cannot be searched by the child's user, that
+  // folder is covered and the visible path bound back (planMounts).
+  for (const fs::path& v : visible) view.reveal.push_back(fs::absolute(v).lexically_normal());
   return view;
 }
 

@@ -7,7 +7,9 @@
 //   1. its own session and process group (the parent kills the whole group with SIGKILL);
 //   2. as root: a private mount namespace where every `hide` path is covered (a directory by an
 //      empty tmpfs, a file by /dev/null), with the `reveal` paths, the work dir and argv[0]
-//      bound back in place (allowOnly() makes `hide` an allow-list of the machine), and the
+//      bound back in place (allowOnly() makes `hide` an allow-list of the machine); a folder
+//      above a revealed path that `uid` cannot search (a checkout in /root, mode 0700) is
+//      covered too, and the way to the revealed path rebuilt with searchable folders; the
 //      work dir a size-capped tmpfs when asked; then a new, empty network namespace;
 //   3. rlimits: CPU, address space, file size, open files, processes, no core files;
 //   4. stdin from /dev/null, stdout and stderr into one pipe the parent drains (capped at
