@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(
   # toolchain
   g++ cmake ninja-build pkg-config git
+  ccache mold        # faster rebuilds (cmake/A6FastBuild.cmake): used when present, never required
   # libraries (found with find_package / pkg-config)
   libeigen3-dev      # Eigen 3.4
   libbox2d-dev       # Box2D 2.4.1
