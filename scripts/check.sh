@@ -20,10 +20,15 @@ folder="$(cd "$folder" && pwd)"
 
 cd "$root" || exit 1
 if [ ! -f build/CMakeCache.txt ]; then
+  echo "check: configuring build/ (once)"
   cmake --preset default >/dev/null || { echo "check: configuring failed (see above)" >&2; exit 1; }
 fi
-cmake --build build --target a6_grade >/dev/null ||
-  { echo "check: building the grader failed: run 'cmake --build build' to see why" >&2; exit 1; }
+# The grader and what it needs; progress every tenth of the steps, the whole output in a log.
+echo "check: building the grader in build/ (the first time a few minutes, then only what changed)"
+cmake --build build --target a6_grade 2>&1 | tee build/check-build.log |
+  awk '/^\[[0-9]+\/[0-9]+\]/ { split(substr($1, 2), a, "/"); tenth = int(10 * a[1] / a[2])
+         if (tenth > shown) { shown = tenth; printf "check:   %d of %d build steps done\n", a[1], a[2] } }' ||
+  { echo "check: building the grader failed: see build/check-build.log, or run 'cmake --build build'" >&2; exit 1; }
 
 echo "check: grading $folder (out/check/report.html)"
 rm -rf "$out"

@@ -6,10 +6,12 @@ execute_process(COMMAND ${NM} -C --defined-only ${GRADER} OUTPUT_VARIABLE grader
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "nm ${GRADER} failed (${status})")
 endif()
-string(REGEX MATCHALL "[0-9a-f]+ [T] [^\n]+" grader_lines "${grader_symbols}")
+# Text symbols, global or local: mold, where the build links with it (cmake/A6FastBuild.cmake),
+# keeps an executable's functions as local ones.
+string(REGEX MATCHALL "[0-9a-f]+ [Tt] [^\n]+" grader_lines "${grader_symbols}")
 set(grader_names "")
 foreach(line IN LISTS grader_lines)
-  string(REGEX REPLACE "^[0-9a-f]+ T " "" name "${line}")
+  string(REGEX REPLACE "^[0-9a-f]+ [Tt] " "" name "${line}")
   list(APPEND grader_names "${name}")
 endforeach()
 list(LENGTH grader_names grader_count)

@@ -3,7 +3,7 @@
 #
 #   student_release_test.sh ROOT A6_GRADE WORK
 #
-#  1. exports it (grader/release/export-student.sh) into WORK/release;
+#  1. exports it (grader/release/export-student.sh) into WORK/home/release (WORK/home: mode 0700);
 #  2. checks what is in it and what is not, and scans it for solution text on its own terms
 #     (every line of solution/*.cpp of 25+ characters that the starter does not have);
 #  3. follows its README from scratch: scripts/install-deps.sh (nothing to install here), then
@@ -17,8 +17,11 @@
 set -uo pipefail
 root="$1" grade="$2" work="$3"
 rm -rf "$work"
-mkdir -p "$work"
-release="$work/release"
+# In a folder of mode 0700, as a student's home folder is: the local check's sandbox user must
+# still reach what it needs.
+mkdir -p "$work/home"
+chmod 0700 "$work/home"
+release="$work/home/release"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 pass() { echo "ok:   $*"; }

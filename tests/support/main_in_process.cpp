@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "brief_failures.h"
 #include "suite.h"
 #include "summary.h"
 
@@ -20,14 +21,22 @@ harness::StudentCode& student() { return *gStudent; }
 
 // --summary-only: GoogleTest's own printer is left out, so a run prints the summary per task and
 // nothing else (ctest's whole-suite entry, `physics`: the entries Task1..Task6 show the failures).
+// --log FILE: the summary, then each failed check with its first message (at most
+// BriefFailures::kMaxLines lines), every message in full in FILE (the entries Task1..Task6).
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   bool summaryOnly = false;
-  for (int k = 1; k < argc; ++k)
-    summaryOnly = summaryOnly || std::string(argv[k]) == "--summary-only";
+  std::string log;
+  for (int k = 1; k < argc; ++k) {
+    const std::string arg = argv[k];
+    summaryOnly = summaryOnly || arg == "--summary-only";
+    if (arg == "--log" && k + 1 < argc) log = argv[++k];
+  }
   ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
-  if (summaryOnly) delete listeners.Release(listeners.default_result_printer());
+  if (summaryOnly || !log.empty()) delete listeners.Release(listeners.default_result_printer());
   gStudent = a6::harness::makeInProcess(referenceForceModel());
+  // GoogleTest tells the end of the run to its listeners last first: the summary comes first.
+  if (!log.empty()) listeners.Append(new a6::test::BriefFailures(log));
   listeners.Append(new a6::test::TaskSummary(summaryOnly));
   return RUN_ALL_TESTS();
 }
