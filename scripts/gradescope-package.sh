@@ -48,8 +48,11 @@ kept_scripts=(scripts/install-deps.sh)
 command -v zip >/dev/null ||
   die "the 'zip' command is missing: install it with scripts/install-deps.sh (Debian package zip)"
 command -v git >/dev/null || die "git is missing: the file list comes from git ls-files"
-git -C "$repo" rev-parse --is-inside-work-tree >/dev/null 2>&1 ||
+top=$(git -C "$repo" rev-parse --show-toplevel 2>/dev/null) ||
   die "$repo is not a git checkout: the file list comes from git ls-files"
+# A copy inside another checkout would list that checkout's files under it (the build folder's).
+[ "$(cd "$top" && pwd -P)" = "$(cd "$repo" && pwd -P)" ] ||
+  die "$repo is not a git checkout itself but lies inside $top: the file list comes from git ls-files"
 for f in grader/gradescope/setup.sh grader/gradescope/run_autograder "${kept_scripts[@]}"; do
   [ -f "$repo/$f" ] || die "$f is missing from the checkout"
 done

@@ -35,8 +35,11 @@ if [ -e "$dest" ] && [ -n "$(ls -A "$dest" 2>/dev/null)" ]; then
   echo "export-student: $dest exists and is not empty: give a new folder" >&2
   exit 2
 fi
-git -C "$root" rev-parse --git-dir >/dev/null 2>&1 ||
+top=$(git -C "$root" rev-parse --show-toplevel 2>/dev/null) ||
   { echo "export-student: $root is not a git checkout (the release is taken from git)" >&2; exit 1; }
+# A copy inside another checkout would list that checkout's files under it (the build folder's).
+[ "$(cd "$top" && pwd -P)" = "$(cd "$root" && pwd -P)" ] ||
+  { echo "export-student: $root is not a git checkout itself but lies inside $top (the release is taken from git)" >&2; exit 1; }
 
 # The graders' material, and what only instructors use: never exported. A path ending in / is a
 # folder.

@@ -29,7 +29,8 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 pass() { echo "ok:   $*"; }
 start=$(date +%s)
 
-# 1. The copy.
+# 1. The copy: a git checkout of its own (the release and the Gradescope zip are taken from git),
+# holding the files as they are now, committed or not.
 if git -C "$root" rev-parse --git-dir >/dev/null 2>&1; then
   (cd "$root" && git ls-files -z --cached --others --exclude-standard |
     xargs -0 cp --parents -t "$checkout" 2>/dev/null)
@@ -37,8 +38,11 @@ else
   tar -C "$root" --exclude=./build --exclude='./build-*' --exclude=./out -cf - . |
     tar -C "$checkout" -xf -
 fi
+(cd "$checkout" && git init -q && git add -A &&
+  git -c user.name=a6-test -c user.email=a6-test@localhost commit -qm "the checkout test's copy") ||
+  fail "the copy could not be made a git checkout"
 [ -x "$checkout/scripts/main.sh" ] || { fail "the copy has no scripts/main.sh"; exit 1; }
-pass "copied $(find "$checkout" -type f | wc -l) files into $checkout (under a folder of mode $(stat -c %a "$work/home"))"
+pass "copied $(git -C "$checkout" ls-files | wc -l) files into $checkout (under a folder of mode $(stat -c %a "$work/home"))"
 
 # 2. The main job.
 cd "$checkout" || exit 1
@@ -59,7 +63,11 @@ for blame in "did not compile" "the grader kit is broken" "Permission denied"; d
     fail "the solution's grading says '$blame'"
   fi
 done
-pass "from a checkout under a 0700 folder: solution $solution, starter $starter"
+released=$(find out/student-release -type f 2>/dev/null | wc -l)
+[ "$released" -gt 100 ] || fail "the student release holds $released files"
+entries=$(unzip -Z1 out/gradescope/a6_autograder.zip 2>/dev/null)
+grep -qx setup.sh <<<"$entries" || fail "the Gradescope zip has no setup.sh"
+pass "from a checkout under a 0700 folder: solution $solution, starter $starter; release: $released files"
 
 echo "checkout test: $failures failure(s) in $(( $(date +%s) - start )) s"
 [ "$failures" -eq 0 ]
