@@ -110,12 +110,18 @@ fi
 grep -q 'Failed.*physics' "$work/test.log" || grep -q 'physics.*Failed' "$work/test.log" ||
   fail "ctest does not list the physics tests as failed"
 
-# The starter files' "Done when" commands: `ctest -R Task1` runs task 1's checks, only those,
-# and fails on the starter; a pattern that matches no test fails too.
-ctest --test-dir build -R Task1 --output-on-failure >"$work/task1.log" 2>&1 &&
-  fail "ctest -R Task1 passed on the starter"
+# The starter files' "Done when" commands: `ctest -R Task1` (the README's form: with the preset)
+# runs task 1's checks, only those, and fails on the starter, printing at most 200 lines; the
+# same from the build folder; a pattern that matches no test fails too.
+ctest --preset default -R Task1 --output-on-failure >"$work/task1.log" 2>&1 &&
+  fail "ctest --preset default -R Task1 passed on the starter"
 grep -q 'Task1Spring\.' "$work/task1.log" || fail "ctest -R Task1 ran no task-1 check"
 ! grep -q 'Task2Forces\.' "$work/task1.log" || fail "ctest -R Task1 ran task 2's checks too"
+[ "$(wc -l <"$work/task1.log")" -le 230 ] ||
+  fail "ctest -R Task1 printed $(wc -l <"$work/task1.log") lines on the starter"
+(cd build && ctest -R Task1 >"$work/task1_in_build.log" 2>&1) &&
+  fail "ctest -R Task1 in build/ passed on the starter"
+grep -q 'Task1 .*Failed' "$work/task1_in_build.log" || fail "ctest -R Task1 in build/ ran no Task1"
 ctest --preset default -R NoSuchTest >"$work/none.log" 2>&1 &&
   fail "ctest --preset default -R NoSuchTest passed: a run that matches no test must fail"
 pass "ctest -R Task1 runs task 1's checks and fails on the starter; no match fails"
