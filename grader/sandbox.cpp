@@ -543,7 +543,7 @@ void planMounts(const SandboxSpec& spec, Plan& plan) {
   const std::vector<fs::path> reveals = revealsOf(spec, plan);
   std::vector<fs::path> hides;
   for (const fs::path& h : spec.hide) hides.push_back(canonicalish(h));
-  if (plan.dropPrivileges && !hides.empty()) {
+  if (plan.dropPrivileges) {
     for (const fs::path& c : unsearchableAncestors(reveals, plan)) hides.push_back(c);
   }
   std::vector<fs::path> hidden;
