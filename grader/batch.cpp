@@ -648,6 +648,29 @@ std::string fingerprint(const Submission& submission, const std::string& options
 
 // ---- outcomes ---------------------------------------------------------------------------------
 
+namespace {
+
+// extra_data.incidents as lines for a TA: "the code crashed 2 times", ...
+std::string oneNumber(double n) {
+  std::ostringstream out;
+  out << n;
+  return out.str();
+}
+
+std::vector<std::string> flagsOf(const Json& incidents) {
+  std::vector<std::string> flags;
+  auto add = [&](const char* key, const std::string& what) {
+    const double n = incidents.is_object() ? numberOf(incidents.value(key, Json())).value_or(0) : 0;
+    if (n > 0) flags.push_back(what + " " + oneNumber(n) + (n == 1 ? " time" : " times"));
+  };
+  add("crashes", "the code crashed");
+  add("timeouts", "the code ran out of time");
+  add("start_failures", "the program did not start");
+  return flags;
+}
+
+}  // namespace
+
 Outcome outcomeOfResults(const std::string& resultsJson) {
   Outcome o;
   const Json r = Json::parse(resultsJson, nullptr, false);
@@ -665,6 +688,13 @@ Outcome outcomeOfResults(const std::string& resultsJson) {
     return o;
   }
   o.total = r["score"].get<double>();
+  if (extra.contains("refused") && extra["refused"].is_string()) {
+    o.status = kNotGraded;
+    o.reason = extra["refused"].get<std::string>();
+    o.max = numberOf(extra.value("max_score", Json()));
+    return o;
+  }
+  o.flags = flagsOf(extra.value("incidents", Json::object()));
   double max = 0, extra_credit = 0;
   std::array<double, 6> tasks{};
   for (const Json& t : r["tests"]) {
@@ -731,6 +761,7 @@ std::string markerJson(const std::string& fingerprint, const Outcome& o) {
   j["extra_credit"] = optionalNumber(o.extraCredit);
   j["seconds"] = std::round(o.seconds * 100) / 100;
   j["reason"] = o.reason;
+  j["flags"] = o.flags;
   return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
@@ -751,6 +782,9 @@ std::optional<Outcome> outcomeOfMarker(const std::string& markerText,
   o.extraCredit = numberOf(j.value("extra_credit", Json()));
   o.seconds = numberOf(j.value("seconds", Json())).value_or(0);
   o.reason = j.value("reason", "");
+  for (const Json& flag : j.value("flags", Json::array())) {
+    if (flag.is_string()) o.flags.push_back(flag.get<std::string>());
+  }
   return o;
 }
 

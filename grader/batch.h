@@ -101,6 +101,8 @@ inline constexpr const char* kBuildFailed = "build failed";  ///< a task file mi
 inline constexpr const char* kGraderError = "grader error";  ///< a6_grade exit 1, no results
 inline constexpr const char* kTimedOut = "timed out";        ///< killed at --timeout
 inline constexpr const char* kCrashed = "crashed";           ///< a6_grade died of a signal
+/// a6_grade exit 2: no task file in it, or an archive that cannot be read (0 points).
+inline constexpr const char* kNotGraded = "not graded";
 
 /// One submission's outcome: a gradebook row without the people.
 struct Outcome {
@@ -112,6 +114,9 @@ struct Outcome {
   std::optional<double> extraCredit;
   double seconds = 0;  ///< a6_grade's wall-clock time
   std::string reason;  ///< why it is not "graded" (for the summary)
+  /// Graded, but for a TA to look at: "the code crashed 3 times", "2 checks ran out of time",
+  /// from results.json's extra_data.incidents.
+  std::vector<std::string> flags;
   bool hasPoints() const { return total.has_value(); }
 };
 

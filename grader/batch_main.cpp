@@ -101,6 +101,32 @@ fs::path besideProgram(const std::string& name) {
   return ec ? fs::path(name) : self.parent_path() / name;
 }
 
+// `a6_grade --check-rubric --rubric FILE`: "" when the rubric can be used, else what a6_grade
+// said (each problem with its line and fix).
+std::string rubricProblems(const fs::path& grader, const fs::path& rubric) {
+  int out[2];
+  if (pipe2(out, O_CLOEXEC) != 0) return std::string("pipe: ") + std::strerror(errno);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(out[1], STDOUT_FILENO);
+    dup2(out[1], STDERR_FILENO);
+    execl(grader.c_str(), grader.c_str(), "--check-rubric", "--rubric", rubric.c_str(), nullptr);
+    _exit(127);
+  }
+  ::close(out[1]);
+  std::string said;
+  char buffer[4096];
+  for (ssize_t n; (n = read(out[0], buffer, sizeof buffer)) != 0;) {
+    if (n > 0) said.append(buffer, static_cast<std::size_t>(n));
+    if (n < 0 && errno != EINTR) break;
+  }
+  ::close(out[0]);
+  int status = 0;
+  if (pid < 0 || waitpid(pid, &status, 0) != pid) return "cannot run " + grader.string();
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  return said.empty() ? grader.string() + " --check-rubric failed" : said;
+}
+
 double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
@@ -128,7 +154,11 @@ double sweepInterval() {
   return seconds >= 0 ? seconds : 1.0;
 }
 
-bool hasGrade(const Outcome& o) { return o.status == kGraded || o.status == kBuildFailed; }
+// An outcome that stands (a re-run skips it): points, even 0 for a submission with nothing to
+// grade in it.
+bool hasGrade(const Outcome& o) {
+  return o.status == kGraded || o.status == kBuildFailed || o.status == kNotGraded;
+}
 
 struct Options {
   std::string input;
@@ -428,9 +458,13 @@ class Batch {
         o.reason = !fromResults.reason.empty() && !hasGrade(fromResults)
                        ? fromResults.reason
                        : "a6_grade failed (exit status 1; see " + std::string(kLog) + ")";
+      } else if (code == 2 && fromResults.status == kNotGraded) {
+        o = fromResults;  // nothing to grade in it: 0 points, and why
       } else if (code == 2) {
         o.status = kGraderError;
-        o.reason = "a6_grade refused its command line (see " + std::string(kLog) + ")";
+        o.reason = !fromResults.reason.empty()
+                       ? fromResults.reason
+                       : "a6_grade refused its command line (see " + std::string(kLog) + ")";
       } else if (code == 127) {
         o.status = kGraderError;
         o.reason = "a6_grade could not be run (see " + std::string(kLog) + ")";
@@ -494,33 +528,43 @@ class Batch {
     return 128 + signo;
   }
 
+  // What a TA should look at for one outcome, one line each ("" for none).
+  static std::string toLookAt(const std::string& key, const Outcome& o) {
+    std::string lines;
+    if (o.status != kGraded) {
+      lines += "    " + key + ": " + o.status + (o.reason.empty() ? "" : ": " + o.reason) + "\n";
+    }
+    for (const std::string& flag : o.flags) {
+      lines += "    " + key + ": graded, but " + flag + " (its report.html says where)\n";
+    }
+    return lines;
+  }
+
   int summary(double wall, int jobs) {
+    // Counted over every submission's outcome, whichever run graded it.
     std::map<std::string, int> count;
     std::vector<double> totals;
-    std::ostringstream problems;
+    std::string problems;
     for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
       if (!outcomes_[i]) continue;
       const Outcome& o = *outcomes_[i];
+      ++count[o.status];
       if (o.total) totals.push_back(*o.total);
-      if (o.status != kGraded) {
-        problems << "    " << inv_.submissions[i].key << ": " << o.status
-                 << (o.reason.empty() ? "" : ": " + o.reason) << "\n";
-      }
-    }
-    for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
-      // Counted by this run's outcome; the skipped ones apart.
-      if (outcomes_[i] && !skipped_[i]) ++count[outcomes_[i]->status];
+      problems += toLookAt(inv_.submissions[i].key, o);
     }
     std::ostringstream out;
     out << "a6_batch: " << inv_.submissions.size() << " submissions in " << o_.input << " ("
         << toString(inv_.layout) << " layout), results in " << out_.string() << "\n";
-    for (const char* status : {kGraded, kBuildFailed, kGraderError, kTimedOut, kCrashed}) {
+    for (const char* status :
+         {kGraded, kBuildFailed, kNotGraded, kGraderError, kTimedOut, kCrashed}) {
       out << "  " << std::left << std::setw(14) << status << std::right << std::setw(5)
           << count[status] << "\n";
     }
     const auto skipped = std::count(skipped_.begin(), skipped_.end(), true);
     out << "  " << std::left << std::setw(14) << "skipped" << std::right << std::setw(5) << skipped
-        << (skipped > 0 ? "  (graded by an earlier run and unchanged; --force regrades)" : "")
+        << (skipped > 0 ? "  (of the above: graded by an earlier run and unchanged; --force "
+                          "regrades)"
+                        : "")
         << "\n";
     out << "  batch wall time " << duration(wall) << " (" << oneDecimal(wall) << " s) with -j "
         << jobs;
@@ -539,8 +583,10 @@ class Batch {
       out << "  totals (points with extra credit) of " << totals.size() << " submissions:\n"
           << histogram(totals);
     }
-    if (!problems.str().empty()) {
-      out << "  to look at (no grade, or a task file missing or broken):\n" << problems.str();
+    if (!problems.empty()) {
+      out << "  to look at (no grade; a task file missing or broken; code that crashed, ran out "
+             "of time or did not start):\n"
+          << problems;
     }
     std::vector<std::string> notes = inv_.notes;
     for (const Submission& s : inv_.submissions) {
@@ -643,6 +689,14 @@ int main(int argc, char** argv) {
   }
   if (!options.rubric.empty() && !fs::is_regular_file(options.rubric, ec)) {
     return refuse("no rubric file " + options.rubric);
+  }
+  // A rubric that cannot be used would fail every grading: said now, before any.
+  if (!options.rubric.empty()) {
+    if (std::string problems = rubricProblems(grader, fs::absolute(options.rubric));
+        !problems.empty()) {
+      while (!problems.empty() && problems.back() == '\n') problems.pop_back();
+      return refuse("the rubric " + options.rubric + " cannot be used:\n" + problems);
+    }
   }
 
   // One batch at a time per output folder (a second would grade the same students at once).

@@ -131,8 +131,13 @@ class BudgetedStudent final : public harness::StudentCode {
     deadline_ = Clock::now() +
                 std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
     lastFailure_.clear();
+    if (outOfTime_) ++checksOutOfTime_;
+    outOfTime_ = false;
     if (newCheck_) newCheck_();
   }
+
+  /// How many checks were cut short by their time limit or by the time budget.
+  int checksOutOfTime() const { return checksOutOfTime_ + (outOfTime_ ? 1 : 0); }
 
   harness::SpringForceResult springForce(const harness::SpringForceRequest& r) override {
     return call<harness::SpringForceResult>([&] { return probe_->springForce(r); });
@@ -173,6 +178,7 @@ class BudgetedStudent final : public harness::StudentCode {
       out << "not run: the checks before it used up the time all checks together may take ("
           << budget_ << " s; their messages say which ran out of time)";
       result.error = out.str();
+      outOfTime_ = true;
       return result;
     }
 #ifdef A6_GRADE_HAVE_PROBE
@@ -187,6 +193,7 @@ class BudgetedStudent final : public harness::StudentCode {
       out << "this check's time limit of " << limit_
           << " s ran out (is there an endless loop, or a loop that runs far too often?)";
       result.error = out.str();
+      outOfTime_ = true;
       return result;
     }
     remaining = std::min(remaining, overall);
@@ -220,6 +227,8 @@ class BudgetedStudent final : public harness::StudentCode {
   std::string unavailable_;
   std::string lastFailure_;  // the last failed request of the running check
   std::string startError_;
+  bool outOfTime_ = false;  // the running check ran out of its time, or of the budget
+  int checksOutOfTime_ = 0;
   double limit_ = kDefaultTimeLimit;
   Clock::time_point deadline_ = Clock::now();
   std::function<std::size_t()> forceAnswers_;
@@ -404,35 +413,75 @@ fs::path defaultRubric() {
   return besideProgram("rubric.toml");
 }
 
+// Where a rubric item is written, for messages: "rubric.toml:45".
+std::string placeOf(const Rubric& rubric, const RubricItem& item) {
+  return rubric.file.string() + ":" + std::to_string(item.line);
+}
+
+// What makes a valid rubric unusable with the checks this a6_grade holds: an item that matches
+// no check (its points could never be earned) and a check that matches no item (it would score
+// nothing). One line each, with the place and the fix; empty when every check counts.
+std::vector<std::string> coverageProblems(const Rubric& rubric) {
+  std::vector<int> used(rubric.items.size(), 0);
+  std::vector<std::string> problems;
+  for (const std::string& name : registeredTests()) {
+    const int item = rubric.itemFor(name);
+    if (item >= 0) {
+      ++used[static_cast<std::size_t>(item)];
+    } else {
+      problems.push_back("the check " + name +
+                         " matches no item's 'tests': it would score nothing (add a glob that "
+                         "matches it to an item)");
+    }
+  }
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    if (used[i] > 0) continue;
+    const RubricItem& item = rubric.items[i];
+    problems.push_back(placeOf(rubric, item) + ": item '" + item.name +
+                       "' matches no check, so its points could never be earned (fix its "
+                       "'tests'; a6_grade --list-tests lists the checks)");
+  }
+  return problems;
+}
+
 // --list-tests: every check and the item it counts for; 1 when some check or item is unmatched.
 int listTests(const Rubric& rubric) {
   if (!rubric.ok()) {
     std::fprintf(stderr, "a6_grade: the rubric is invalid:\n%s\n", rubric.error.c_str());
     return 1;
   }
-  std::vector<int> used(rubric.items.size(), 0);
-  int unmatched = 0;
   for (const std::string& name : registeredTests()) {
     const int item = rubric.itemFor(name);
-    if (item < 0) {
-      ++unmatched;
-      std::printf("%s\t-\n", name.c_str());
-    } else {
-      ++used[static_cast<std::size_t>(item)];
-      std::printf("%s\t%s\n", name.c_str(),
-                  rubric.items[static_cast<std::size_t>(item)].name.c_str());
-    }
+    std::printf("%s\t%s\n", name.c_str(),
+                item < 0 ? "-" : rubric.items[static_cast<std::size_t>(item)].name.c_str());
   }
-  int empty = 0;
-  for (std::size_t i = 0; i < used.size(); ++i) {
-    if (used[i] == 0) {
-      ++empty;
-      std::fprintf(stderr, "a6_grade: rubric item '%s' matches no check\n",
-                   rubric.items[i].name.c_str());
-    }
+  const std::vector<std::string> problems = coverageProblems(rubric);
+  for (const std::string& p : problems) std::fprintf(stderr, "a6_grade: %s\n", p.c_str());
+  return problems.empty() ? 0 : 1;
+}
+
+// --check-rubric: the rubric read and matched against every check, before anything is graded.
+// 0 and a one-line summary when it can be used; 2 and each problem (place and fix) when not.
+int checkRubric(const Rubric& rubric) {
+  if (!rubric.ok()) {
+    std::fprintf(stderr, "a6_grade: the rubric is invalid:\n%s\n", rubric.error.c_str());
+    return 2;
   }
-  if (unmatched > 0) std::fprintf(stderr, "a6_grade: %d checks match no rubric item\n", unmatched);
-  return unmatched == 0 && empty == 0 ? 0 : 1;
+  const std::vector<std::string> problems = coverageProblems(rubric);
+  for (const std::string& p : problems) std::fprintf(stderr, "a6_grade: %s\n", p.c_str());
+  if (!problems.empty()) return 2;
+  double extra = 0;
+  int hidden = 0;
+  for (const RubricItem& item : rubric.items) {
+    if (item.extraCredit) extra += item.points;
+    if (item.visibility != Visibility::Visible) ++hidden;
+  }
+  std::printf(
+      "%s: valid: %zu items (%d shown to students only later), %g points + %g extra "
+      "credit, %zu checks, each counted by an item\n",
+      rubric.file.string().c_str(), rubric.items.size(), hidden, rubric.totalPoints, extra,
+      registeredTests().size());
+  return 0;
 }
 
 struct Options {
@@ -448,6 +497,7 @@ struct Options {
   double timeBudget = kDefaultTimeBudget;
   std::string filter;
   bool listTests = false;
+  bool checkRubric = false;
   std::string publicRubric;
   bool quiet = false;
   bool color = false;
@@ -577,7 +627,20 @@ int grade(const Options& options, const Rubric& rubric) {
       return 1;
     }
   }
-  if (!rubric.ok()) fail("the rubric is invalid:\n" + rubric.error);
+  // Input that cannot be graded stops here, before any build: results.json says why (score 0),
+  // the terminal one line per problem, exit status 2.
+  auto refuse = [&](const std::string& why, bool theSubmissions) {
+    (theSubmissions ? report.refused : report.errors.emplace_back()) = why;
+    for (const std::string& e :
+         {writeResultsJson(report, results), writeHtml(report, out / "report.html")}) {
+      if (!e.empty()) std::fprintf(stderr, "a6_grade: %s\n", e.c_str());
+    }
+    std::error_code ignored;
+    if (!scratch.empty()) fs::remove_all(scratch, ignored);
+    std::fprintf(stderr, "a6_grade: %s\n", why.c_str());
+    return 2;
+  };
+  if (!rubric.ok()) return refuse("the rubric is invalid:\n" + rubric.error, false);
 
   // The sandbox's user, ours alone for this grading (grader/process.h).
   std::string claimError;
@@ -616,7 +679,34 @@ int grade(const Options& options, const Rubric& rubric) {
   report.intake.error = "this a6_grade was built without the intake library (grader/intake.cpp)";
   fail(report.intake.error);
 #endif
+  if (!report.intake.ok()) return refuse(report.intake.error, true);
+  if (report.intake.files.empty()) {
+    return refuse(
+        "none of the six task files (spring.cpp, forces.cpp, time_stepping.cpp, "
+        "cloth.cpp, particle_system.cpp, joints.cpp) is in " +
+            options.submission + ": nothing to grade",
+        true);
+  }
   report.seed = options.seed ? *options.seed : seedOf(report.intake.files);
+
+  // The checks, registered now so that the rubric is matched against them before any build.
+  try {
+    initGoogleTest(report.seed, options.filter);
+#ifdef A6_GRADE_HAVE_GOLDEN
+    // The images: the grader's alone (the sandbox's user may not read them, whatever its view).
+    fs::create_directories(work / "images", ec);
+    fs::permissions(work / "images", fs::perms::owner_all, ec);
+    a6::test::registerGoldenChecks((work / "images").string(),
+                                   a6::test::ImagePaths::InTheReportOnly);
+#endif
+  } catch (const std::exception& e) {
+    fail(std::string("registering the checks failed: ") + e.what());
+  }
+  if (const std::vector<std::string> problems = coverageProblems(rubric); !problems.empty()) {
+    std::string why = "the rubric does not fit the checks:";
+    for (const std::string& p : problems) why += "\n" + p;
+    return refuse(why, false);
+  }
 
   // 2. Build.
   std::string unavailable;
@@ -702,14 +792,6 @@ int grade(const Options& options, const Rubric& rubric) {
   gStudent = &student;
   int skipped = 0;
   try {
-    initGoogleTest(report.seed, options.filter);
-#ifdef A6_GRADE_HAVE_GOLDEN
-    // The images: the grader's alone (the sandbox's user may not read them, whatever its view).
-    fs::create_directories(work / "images", ec);
-    fs::permissions(work / "images", fs::perms::owner_all, ec);
-    a6::test::registerGoldenChecks((work / "images").string(),
-                                   a6::test::ImagePaths::InTheReportOnly);
-#endif
     auto* collector = new Collector(rubric, report.tests, !options.quiet);
     ::testing::UnitTest::GetInstance()->listeners().Append(collector);  // GoogleTest owns it
     if (!options.quiet)
@@ -737,6 +819,10 @@ int grade(const Options& options, const Rubric& rubric) {
       const auto* client = static_cast<ProbePair*>(probe.get());
       report.probeOutput = client->output(kProbeOutputCap);
       for (const std::string& note : client->notes()) report.notes.push_back("sandbox: " + note);
+      const ProbeIncidents incidents = client->incidents();
+      report.incidents.crashes = incidents.crashes;
+      report.incidents.timeouts = incidents.timeouts + student.checksOutOfTime();
+      report.incidents.startFailures = incidents.startFailures;
       if (client->restarts() > 0) {
         report.notes.push_back("the probes were restarted " + std::to_string(client->restarts()) +
                                " times (after crashes or time limits)");
@@ -756,7 +842,7 @@ int grade(const Options& options, const Rubric& rubric) {
 
   // 4. Score, 5. report.
   try {
-    if (rubric.ok()) score(report, rubric);
+    score(report, rubric);
   } catch (const std::exception& e) {
     fail(std::string("scoring failed: ") + e.what());
   }
@@ -825,6 +911,9 @@ int main(int argc, char** argv) {
                  "partial)");
   app.add_flag("--list-tests", options.listTests,
                "print every check and the rubric item it counts for, then exit");
+  app.add_flag("--check-rubric", options.checkRubric,
+               "check the rubric (--rubric, or the default) against every check, then exit: 0 "
+               "when it can be used, 2 and each problem with its line and fix when not");
   app.add_option("--public-rubric", options.publicRubric,
                  "write the rubric without its items on hidden checks (for a student release) "
                  "to this file, then exit");
@@ -859,12 +948,12 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
-  if (options.listTests) {
+  if (options.listTests || options.checkRubric) {
     initGoogleTest(1, options.filter);
 #ifdef A6_GRADE_HAVE_GOLDEN
     a6::test::registerGoldenChecks((fs::temp_directory_path() / "a6_grade_list").string());
 #endif
-    return listTests(rubric);
+    return options.listTests ? listTests(rubric) : checkRubric(rubric);
   }
   if (options.submission.empty() || options.out.empty()) {
     std::fprintf(stderr, "a6_grade: give a SUBMISSION and --out DIR (a6_grade --help)\n");

@@ -261,6 +261,7 @@ struct ProbeClient::Impl {
   std::unique_ptr<ForceServer> forceServer;  // of the running probe, when forceModels is set
   int toProbe = -1, fromProbe = -1;
   int starts = 0;
+  ProbeIncidents incidents;
   std::string pastOutput;
   std::vector<std::string> notes;
   mutable std::mutex mutex;
@@ -350,6 +351,7 @@ struct ProbeClient::Impl {
       ::close(answer[0]);
       process.reset();
       forceServer.reset();
+      ++incidents.startFailures;
       return "could not start the probe: " + error;
     }
     toProbe = request[1];
@@ -379,6 +381,7 @@ struct ProbeClient::Impl {
       alive = process->alive();
     }
     const Exit exit = shutdown(alive ? "closed its answer pipe" : "crashed");
+    ++incidents.crashes;
     std::string text = alive ? "the probe closed its answer pipe without answering, so it was "
                                "stopped"
                              : "the probe crashed: " + exit.describe();
@@ -395,6 +398,7 @@ struct ProbeClient::Impl {
   std::string exchange(const std::string& bytes, const Deadline& deadline, std::string& body) {
     auto timedOut = [&] {
       shutdown("ran out of time");
+      ++incidents.timeouts;
       return "your code took longer than " + seconds(timeout) +
              " s on this request (the time limit), so it was stopped";
     };
@@ -439,6 +443,7 @@ struct ProbeClient::Impl {
         : !filtered ? "it runs without its seccomp filter"
                     : "it runs " + std::to_string(info->threads) + " threads instead of one";
     shutdown("failed its start-up check");
+    ++incidents.startFailures;
     return "the probe failed the grader's start-up check: " + what +
            " (code that runs before main, such as a static initializer, must not start threads "
            "or change how the program starts)";
@@ -571,6 +576,11 @@ int ProbeClient::starts() const {
   return impl_->starts;
 }
 
+ProbeIncidents ProbeClient::incidents() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->incidents;
+}
+
 std::vector<std::string> ProbeClient::notes() const {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   return impl_->notes;
@@ -627,6 +637,11 @@ std::size_t ProbePair::forceAnswers() const { return models_->forceAnswers(); }
 
 int ProbePair::restarts() const {
   return std::max(0, plain_->starts() - 1) + std::max(0, models_->starts() - 1);
+}
+
+ProbeIncidents ProbePair::incidents() const {
+  const ProbeIncidents a = plain_->incidents(), b = models_->incidents();
+  return {a.crashes + b.crashes, a.timeouts + b.timeouts, a.startFailures + b.startFailures};
 }
 
 std::vector<std::string> ProbePair::notes() const {

@@ -33,6 +33,14 @@ inline double forceWaitAllowance(std::size_t answers, double limit) {
   return extra < kForceWaitCap * limit ? extra : kForceWaitCap * limit;
 }
 
+/// What the student's code did to the probes, for a TA's "to look at" list (a6_batch): each
+/// counts once per probe stopped for it.
+struct ProbeIncidents {
+  int crashes = 0;        ///< killed by a signal (SIGSEGV, SIGABRT, SIGXCPU...) or exited
+  int timeouts = 0;       ///< stopped at a request's time limit
+  int startFailures = 0;  ///< could not be started, or failed the start-up check
+};
+
 class ProbeClient final : public harness::StudentCode {
  public:
   /// `probe`: the linked probe executable; `workRoot`: where fresh working directories go
@@ -73,6 +81,7 @@ class ProbeClient final : public harness::StudentCode {
   std::string output() const;
   /// How many probes were started (1 + restarts after crashes and timeouts).
   int starts() const;
+  ProbeIncidents incidents() const;
   /// What the sandbox could not apply (not root, namespaces refused), once each.
   std::vector<std::string> notes() const;
   /// Stops the running probe, if any (the next request starts a fresh one).
@@ -113,6 +122,8 @@ class ProbePair final : public harness::StudentCode {
   /// How often a probe was started again after a crash or a time limit (0 when each was
   /// started at most once).
   int restarts() const;
+  /// Both probes' incidents, added up.
+  ProbeIncidents incidents() const;
   std::vector<std::string> notes() const;
 
  private:

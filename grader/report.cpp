@@ -142,12 +142,28 @@ std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
   return cap(out, kItemOutputCap);
 }
 
+// The score line a student may see now: only the visible items count, and it says so when
+// others exist (their outcome must not show through the total before the due date).
+std::string visibleScoreLine(const GradeReport& report) {
+  const VisibleTotals v = visibleTotals(report);
+  std::string line = (v.laterItems == 0 ? "Score: " : "Score on the items shown now: ") +
+                     fmt(v.score) + " / " + fmt(v.max);
+  if (v.extraCredit > 0) line += " (+" + fmt(v.extraCredit) + " extra credit)";
+  if (v.laterItems > 0) {
+    line += "\nNot counted here: " + std::to_string(v.laterItems) + " items worth " +
+            fmt(v.laterPoints) + " points (checks on new inputs), shown after the due date";
+  }
+  return line + "\n";
+}
+
 std::string overallOutput(const GradeReport& report) {
   std::ostringstream out;
   if (!report.rubricTitle.empty()) out << report.rubricTitle << "\n";
-  out << "Score: " << fmt(report.score - report.extraCredit) << " / " << fmt(report.maxScore);
-  if (report.extraCredit > 0) out << " (+" << fmt(report.extraCredit) << " extra credit)";
-  out << "\n";
+  if (!report.refused.empty()) {
+    out << "Score: 0 / " << fmt(report.maxScore) << "\nNot graded: " << report.refused << "\n";
+    return out.str();
+  }
+  out << visibleScoreLine(report);
   out << "Seed of the randomised checks: " << report.seed << "\n";
   // What was taken from the submission.
   if (!report.intake.ok()) {
@@ -203,6 +219,25 @@ std::string mimeOf(const std::filesystem::path& file) {
 }  // namespace
 
 // Scoring --------------------------------------------------------------------------------------
+
+VisibleTotals visibleTotals(const GradeReport& report) {
+  VisibleTotals v;
+  for (const ScoredItem& s : report.items) {
+    const bool now = s.item.visibility == Visibility::Visible;
+    if (!now) {
+      v.laterPoints += s.item.extraCredit ? 0 : s.item.points;
+      ++v.laterItems;
+    } else if (s.item.extraCredit) {
+      v.extraCredit += s.score;
+    } else {
+      v.score += s.score;
+      v.max += s.item.points;
+    }
+  }
+  v.score = round4(v.score);
+  v.extraCredit = round4(v.extraCredit);
+  return v;
+}
 
 void score(GradeReport& report, const Rubric& rubric) {
   report.items.clear();
@@ -303,6 +338,10 @@ std::string resultsJson(const GradeReport& report) {
   extra["warnings"] = report.warnings;
   extra["notes"] = report.notes;
   extra["errors"] = report.errors;
+  if (!report.refused.empty()) extra["refused"] = report.refused;
+  extra["incidents"] = {{"crashes", report.incidents.crashes},
+                        {"timeouts", report.incidents.timeouts},
+                        {"start_failures", report.incidents.startFailures}};
   root["extra_data"] = std::move(extra);
 
   // Student-derived text may not be valid UTF-8: replace bad bytes rather than throw.
@@ -473,7 +512,10 @@ std::string htmlReport(const GradeReport& report) {
   if (report.extraCredit > 0) out << " (+" << fmt(report.extraCredit) << " extra credit)";
   out << " &middot; seed " << report.seed << " &middot; " << fixed2(report.seconds) << " s</p>\n";
 
-  if (!report.errors.empty() || !report.build.error.empty() || !report.intake.ok()) {
+  if (!report.refused.empty()) {
+    out << "<div class=\"box error\"><b>Not graded</b><p>" << htmlEscape(report.refused)
+        << "</p></div>\n";
+  } else if (!report.errors.empty() || !report.build.error.empty() || !report.intake.ok()) {
     out << "<div class=\"box error\"><b>Grading problems</b><ul>";
     if (!report.intake.ok()) out << "<li>intake: " << htmlEscape(report.intake.error) << "</li>";
     if (!report.build.error.empty()) {
@@ -608,6 +650,12 @@ std::string terminalSummary(const GradeReport& report, bool color) {
       << (fixed2(report.score - report.extraCredit) + " / " + fixed2(report.maxScore));
   if (report.extraCredit > 0) out << "   +" << fixed2(report.extraCredit) << " extra credit";
   out << "\n";
+  if (const VisibleTotals v = visibleTotals(report); v.laterItems > 0) {
+    out << "  " << std::left << std::setw(52) << "shown to students before the due date"
+        << std::right << std::setw(16) << (fixed2(v.score) + " / " + fixed2(v.max));
+    if (v.extraCredit > 0) out << "   +" << fixed2(v.extraCredit) << " extra credit";
+    out << "\n";
+  }
   for (const TaskBuild& t : report.build.tasks) {
     if (t.usesStarter()) out << "  " << red << t.file << ": " << describeBuild(t) << reset << "\n";
   }

@@ -64,7 +64,25 @@ struct GradeReport {
   std::vector<std::string> notes;     ///< for instructors: sandbox protections that could not
                                       ///< be applied (not root, ...), and the like
   std::vector<std::string> errors;    ///< grader-level problems (never crashes: they land here)
+  /// Why nothing was graded (no such submission, no task file in it, a rubric that cannot be
+  /// used): a6_grade stopped before any build and exits 2. Empty for a graded submission.
+  std::string refused;
+  /// What the student's code did that a TA may want to look at, though it was graded: probes
+  /// that crashed, requests and checks stopped at a time limit (or not run when the time
+  /// budget was spent), probes that did not start. results.json's extra_data.incidents.
+  struct Incidents {
+    int crashes = 0, timeouts = 0, startFailures = 0;
+  } incidents;
 };
+
+/// The part of a score a student sees before the due date: the items whose visibility is
+/// "visible" (the others are shown later, or never).
+struct VisibleTotals {
+  double score = 0, max = 0, extraCredit = 0;
+  double laterPoints = 0;  ///< regular points of the items not visible yet
+  int laterItems = 0;
+};
+VisibleTotals visibleTotals(const GradeReport& report);
 
 /// Scores `report.tests` with `rubric`: fills items, score, maxScore, extraCredit, warnings.
 /// Deterministic: the same tests and rubric give the same numbers.

@@ -26,6 +26,7 @@ packages=(
   xvfb xauth         # a virtual X server for the viewer's smoke test
   fonts-dejavu-core  # the viewer panel's font (Greek letters, ×)
   zip unzip          # the Gradescope autograder zip (scripts/gradescope-package.sh) and its test
+  jq                 # JSON on the command line (scripts/instructor.sh reads results.json)
 )
 
 missing=()

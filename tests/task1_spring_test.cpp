@@ -76,9 +76,11 @@ TEST(Task1Spring, FormulaHoldsInEveryDirection) {
   for (int k = 0; k < 16; ++k) {
     const double angle = 2 * M_PI * k / 16;
     const Vec2 e(std::cos(angle), std::sin(angle));
-    for (double l : {0.3, 0.7, 1.9}) {
+    // By hand, along e: l = 0.3 pushes p2 away with 13 * 0.4 = 5.2 N, l = 0.7 is at rest,
+    // l = 1.9 pulls p2 back with 13 * 1.2 = 15.6 N.
+    for (const auto& [l, along] : {std::pair{0.3, 5.2}, {0.7, 0.0}, {1.9, -15.6}}) {
       const auto r = spring(Vec2(0.25, -0.5), Vec2(0.25, -0.5) + l * e, l0, ks, 0);
-      const Vec2 f = forceOf(r), expected = -ks * (l - l0) * e;
+      const Vec2 f = forceOf(r), expected = along * e;
       if (springs.expectNear(f, expected, tol(r), input(r))) continue;
       const double slack = tol(r).absolute();
       allOpposite = allOpposite && finite(f) && (f + expected).cwiseAbs().maxCoeff() <= slack;

@@ -1,6 +1,7 @@
 // Task 2 — the forces of the slide "Some forces". Oracles: each formula on tiny inputs with
-// values computed by hand, in several directions, and externalForce as the sum of the parts
-// (with the contacts measured by the framework's contactWith, as the student's code must).
+// values computed by hand (the arithmetic in a comment), in several directions, and properties
+// (proportional to m, opposite to v, zero outside an obstacle). Never a second copy of the
+// formulas: the expected values of externalForce are sums done by hand too.
 #include <cmath>
 
 #include "scales.h"
@@ -57,24 +58,25 @@ harness::ForcesResult forcesOf(const harness::ForcesRequest& r) {
   return result;
 }
 
-// The hint of a check of externalForce's total: when one of the parts it adds is itself wrong
-// (the checks of gravity, buoyancy or drag fail too), that part, not `sumHint`.
+// The parts of a particle's force, computed by hand for one test's input.
+struct Parts {
+  Vec2 gravity, buoyancy, drag;
+};
+
+// The hint of a check of externalForce's total: when one of the parts it adds is itself off
+// (its own checks fail too), that part, not `sumHint`. `expected`: the test's hand-computed
+// parts; the repulsion asked for with no contact must be zero.
 std::string totalHint(const harness::ForcesResult& got, const harness::ForcesRequest& r,
-                      const std::string& sumHint) {
-  const Particle& p = r.particle;
-  const Environment& env = r.env;
-  const Tolerance t = relativeTo(externalForceScale(p, env, r.contact.depth));
+                      const Parts& expected, const std::string& sumHint) {
+  const Tolerance t = tol(r);
   const struct {
     const char* name;
     Vec2 actual, expected;
   } parts[] = {
-      {"gravity (m g)", got.gravity, p.m * env.gravity},
-      {"buoyancy (b (T - T_air) (0, 1))", got.buoyancy,
-       env.buoyancy * (p.temperature - env.airTemperature) * Vec2(0, 1)},
-      {"drag (-k_d v)", got.drag, -env.drag * p.v},
-      {"repulsion for the contact given (k_r d n while d > 0, zero otherwise)", got.repulsion,
-       r.contact.depth > 0 ? Vec2(env.repulsion * r.contact.depth * r.contact.normal)
-                           : Vec2(Vec2::Zero())},
+      {"gravity (m g)", got.gravity, expected.gravity},
+      {"buoyancy (b (T - T_air) (0, 1))", got.buoyancy, expected.buoyancy},
+      {"drag (-k_d v)", got.drag, expected.drag},
+      {"repulsion for no contact (zero while d <= 0)", got.repulsion, Vec2::Zero()},
   };
   for (const auto& part : parts) {
     if (!finite(part.actual) ||
@@ -94,21 +96,6 @@ harness::ForcesRequest request(const Particle& p, const Environment& env,
   r.env = env;
   r.contact = contact;
   return r;
-}
-
-// The sum that externalForce must return, from the slide's formulas and the framework's contacts.
-Vec2 expectedTotal(const Particle& p, const Environment& env) {
-  Vec2 f = p.m * env.gravity + env.buoyancy * (p.temperature - env.airTemperature) * Vec2(0, 1) -
-           env.drag * p.v;
-  for (const HalfPlane& plane : env.planes) {
-    const Contact c = contactWith(plane, p.x);
-    if (c.depth > 0) f += env.repulsion * c.depth * c.normal;
-  }
-  for (const CircleObstacle& circle : env.circles) {
-    const Contact c = contactWith(circle, p.x);
-    if (c.depth > 0) f += env.repulsion * c.depth * c.normal;
-  }
-  return f;
 }
 
 // Gravity ---------------------------------------------------------------------------------------
@@ -141,9 +128,11 @@ TEST(Task2Forces, GravityFollowsGInAnyDirection) {
   for (int k = 0; k < 8; ++k) {
     const double angle = 2 * M_PI * k / 8 + 0.1;
     Environment env = quiet();
-    env.gravity = 3.7 * Vec2(std::cos(angle), std::sin(angle));
+    const Vec2 u(std::cos(angle), std::sin(angle));
+    env.gravity = 3.7 * u;
     const auto r = request(particle(Vec2(1, -2), Vec2(0.5, 0.5), 1.7), env);
-    directions.expectNear(forcesOf(r).gravity, 1.7 * env.gravity, tol(r), input(r));
+    // By hand: 1.7 kg * 3.7 m/s² = 6.29 N along u.
+    directions.expectNear(forcesOf(r).gravity, 6.29 * u, tol(r), input(r));
   }
   directions.report(hint("use the whole vector g (both components), not just its y component"));
 }
@@ -192,14 +181,15 @@ TEST(Task2Forces, NoBuoyancyAtAirTemperature) {
 
 TEST(Task2Forces, DragOpposesVelocityInAnyDirection) {
   ManyInputs velocities("velocities (2 k_d, 12 directions)");
-  for (const double kd : {0.7, 2.0}) {
+  // By hand, |v| = 2.5 m/s: k_d = 0.7 gives 1.75 N against v, k_d = 2 gives 5 N.
+  for (const auto& [kd, against] : {std::pair{0.7, 1.75}, {2.0, 5.0}}) {
     for (int k = 0; k < 12; ++k) {
       const double angle = 2 * M_PI * k / 12 + 0.3;
       Environment env = quiet();
       env.drag = kd;
-      const Vec2 v = 2.5 * Vec2(std::cos(angle), std::sin(angle));
-      const auto r = request(particle(Vec2(0.2, 0.1), v, 1.5), env);
-      velocities.expectNear(forcesOf(r).drag, -kd * v, tol(r), input(r));
+      const Vec2 u(std::cos(angle), std::sin(angle));
+      const auto r = request(particle(Vec2(0.2, 0.1), 2.5 * u, 1.5), env);
+      velocities.expectNear(forcesOf(r).drag, -against * u, tol(r), input(r));
     }
   }
   velocities.report(
@@ -258,11 +248,18 @@ TEST(Task2Forces, ExternalForceAddsGravityBuoyancyAndDrag) {
   const harness::ForcesResult got = forcesOf(r);
   EXPECT_VEC_NEAR(got.total, Vec2(-0.5, -2), tol(r))
       << input(r)
-      << totalHint(got, r, "externalForce is the sum gravity + buoyancy + drag (+ repulsion)");
+      << totalHint(got, r, {Vec2(0, -5), Vec2(0, 2), Vec2(-0.5, 1)},
+                   "externalForce is the sum gravity + buoyancy + drag (+ repulsion)");
 }
 
 TEST(Task2Forces, ExternalForceAddsEveryObstacleItIsIn) {
   // A particle inside a floor and a circle at once, outside a wall and another circle.
+  // m = 0.4, g = (0, -9.81): (0, -3.924); b = 0.002, T - T_air = 20: (0, 0.04);
+  // k_d = 0.3, v = (0.5, -1.5): (-0.15, 0.45).
+  // Floor (n = (0, 1), offset 0) at y = -0.04: d = 0.04, k_r d n = 500 * 0.04 * (0, 1) = (0, 20).
+  // Circle at (0.14, -0.12), r = 0.25: x - c = (0.06, 0.08), |x - c| = 0.1, so d = 0.15 and
+  // n = (0.6, 0.8): 500 * 0.15 * (0.6, 0.8) = (45, 60).
+  // Sum: (-0.15 + 45, -3.924 + 0.04 + 0.45 + 20 + 60) = (44.85, 76.566).
   Environment env = quiet();
   env.gravity = Vec2(0, -9.81);
   env.buoyancy = 0.002;
@@ -271,7 +268,7 @@ TEST(Task2Forces, ExternalForceAddsEveryObstacleItIsIn) {
   env.repulsion = 500;
   env.planes.push_back({Vec2(0, 1), 0.0});        // floor y < 0
   env.planes.push_back({Vec2(-0.6, 0.8), -3.0});  // a tilted wall far to the right
-  env.circles.push_back({Vec2(0.1, -0.2), 0.25});
+  env.circles.push_back({Vec2(0.14, -0.12), 0.25});
   env.circles.push_back({Vec2(-2, 1), 0.5});
   const Particle p = particle(Vec2(0.2, -0.04), Vec2(0.5, -1.5), 0.4, 320);
 
@@ -283,9 +280,9 @@ TEST(Task2Forces, ExternalForceAddsEveryObstacleItIsIn) {
 
   const auto r = request(p, env);
   const harness::ForcesResult got = forcesOf(r);
-  EXPECT_VEC_NEAR(got.total, expectedTotal(p, env), tol(r))
+  EXPECT_VEC_NEAR(got.total, Vec2(44.85, 76.566), tol(r))
       << input(r)
-      << totalHint(got, r,
+      << totalHint(got, r, {Vec2(0, -3.924), Vec2(0, 0.04), Vec2(-0.15, 0.45)},
                    "add repulsionForce(contactWith(obstacle, p.x), env.repulsion) for "
                    "EVERY half-plane and EVERY circle in env, on top of gravity, "
                    "buoyancy and drag");
@@ -293,12 +290,18 @@ TEST(Task2Forces, ExternalForceAddsEveryObstacleItIsIn) {
 
 TEST(Task2Forces, ExternalForceAddsTwoOverlappingCircles) {
   // Inside two circles and a diagonal half-plane: three repulsions add up.
+  // Half-plane n = (0.6, 0.8), offset 0.3, at x = (0.3, -0.1): n.x = 0.1, d = 0.2:
+  // 200 * 0.2 * (0.6, 0.8) = (24, 32).
+  // Circle at (0.06, -0.42), r = 0.5: x - c = (0.24, 0.32), distance 0.4, d = 0.1,
+  // n = (0.6, 0.8): (12, 16). Circle at (0.6, -0.1), r = 0.5: x - c = (-0.3, 0), d = 0.2,
+  // n = (-1, 0): (-40, 0). Gravity: 1.2 * (0, -9.81) = (0, -11.772).
+  // Sum: (24 + 12 - 40, 32 + 16 - 11.772) = (-4, 36.228).
   Environment env = quiet();
   env.gravity = Vec2(0, -9.81);
   env.repulsion = 200;
   env.planes.push_back({Vec2(0.6, 0.8), 0.3});
-  env.circles.push_back({Vec2(0, 0), 0.5});
-  env.circles.push_back({Vec2(0.5, 0), 0.5});
+  env.circles.push_back({Vec2(0.06, -0.42), 0.5});
+  env.circles.push_back({Vec2(0.6, -0.1), 0.5});
   const Particle p = particle(Vec2(0.3, -0.1), Vec2::Zero(), 1.2);
   ASSERT_GT(contactWith(env.planes[0], p.x).depth, 0);
   ASSERT_GT(contactWith(env.circles[0], p.x).depth, 0);
@@ -306,9 +309,9 @@ TEST(Task2Forces, ExternalForceAddsTwoOverlappingCircles) {
 
   const auto r = request(p, env);
   const harness::ForcesResult got = forcesOf(r);
-  EXPECT_VEC_NEAR(got.total, expectedTotal(p, env), tol(r))
+  EXPECT_VEC_NEAR(got.total, Vec2(-4, 36.228), tol(r))
       << input(r)
-      << totalHint(got, r,
+      << totalHint(got, r, {Vec2(0, -11.772), Vec2::Zero(), Vec2::Zero()},
                    "every obstacle the particle is inside pushes on its own: sum them "
                    "all, using each obstacle's own depth and normal from contactWith");
 }
@@ -327,7 +330,7 @@ TEST(Task2Forces, ObstaclesOutsideAddNothing) {
   const harness::ForcesResult got = forcesOf(r);
   EXPECT_VEC_NEAR(got.total, Vec2(-0.5, -21), tol(r))
       << input(r)
-      << totalHint(got, r,
+      << totalHint(got, r, {Vec2(0, -20), Vec2::Zero(), Vec2(-0.5, -1)},
                    "an obstacle the particle is not inside (depth <= 0) adds nothing: "
                    "check the depth before adding k_r d n");
 }

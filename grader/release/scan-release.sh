@@ -8,9 +8,14 @@
 #   - a graders' path: solution/, tests/hidden/, tests/golden/hidden/, reference_models.inc;
 #   - a line of code of the solution, the hidden checks or the reference models: every line of
 #     those files that is not a comment, is at least 25 characters long (shorter ones, such as
-#     "return f;", are in any C++ file) and is not also in the public code (starter/,
-#     framework/, the public tests), compared with leading and trailing blanks trimmed;
-#   - a hidden reference image, by content (sha256), under any name.
+#     "return f;", are in any C++ file) and is not also in the public code (starter/ and
+#     framework/; for the hidden checks, the public tests too), compared with leading and
+#     trailing blanks trimmed. A line of the solution in a public test is refused;
+#   - a hidden reference image, by content (sha256), under any name;
+#   - in a test's source, a helper that computes the answer: a function whose name says it
+#     gives the expected or correct value (expectedTotal, correctStep, answerFor, ...). Public
+#     tests compare with numbers computed by hand or with properties, never with a second copy
+#     of the task's formula (docs/instructor.md, "The student release").
 set -euo pipefail
 root="$1" dest="$2"
 work="$(mktemp -d)"
@@ -30,16 +35,22 @@ done < <(find "$dest" \( -name reference_models.inc -o -name hidden_test.cpp \) 
 
 trimmed() { sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' "$@"; }
 
-# The secret lines, less the public ones.
+# The secret lines, less the public ones: the solution's and the reference models' less what the
+# starter and the framework hold (a public test holds none of them: a line of the solution in a
+# test is the answer); the hidden checks' less the public tests' too (they share their helpers).
 shopt -s nullglob
-secret_files=("$root"/solution/*.cpp "$root"/tests/hidden/* "$root"/tests/support/reference_models.inc)
-public_files=("$root"/starter/* "$root"/tests/*.cpp "$root"/tests/support/*.h "$root"/tests/support/*.cpp
+answers=("$root"/solution/*.cpp "$root"/tests/support/reference_models.inc)
+hidden_checks=("$root"/tests/hidden/*)
+public_tests=("$root"/tests/*.cpp "$root"/tests/support/*.h "$root"/tests/support/*.cpp
               "$root"/tests/golden/*.cpp)
-trimmed "${secret_files[@]}" | grep -v -e '^//' -e '^/\*' -e '^\*' | awk 'length($0) >= 25' |
-  sort -u >"$work/secret"
-{ trimmed "${public_files[@]}"; find "$root/framework" -type f \( -name '*.h' -o -name '*.cpp' \) \
+code_lines() { trimmed "$@" | grep -v -e '^//' -e '^/\*' -e '^\*' | awk 'length($0) >= 25' | sort -u; }
+{ trimmed "$root"/starter/*; find "$root/framework" -type f \( -name '*.h' -o -name '*.cpp' \) \
     -exec sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' {} +; } | sort -u >"$work/public"
-comm -23 "$work/secret" "$work/public" >"$work/lines"
+trimmed "${public_tests[@]}" | sort -u | sort -u - "$work/public" >"$work/public_and_tests"
+{
+  code_lines "${answers[@]}" | comm -23 - "$work/public"
+  [ "${#hidden_checks[@]}" -eq 0 ] || code_lines "${hidden_checks[@]}" | comm -23 - "$work/public_and_tests"
+} | sort -u >"$work/lines"
 if [ ! -s "$work/lines" ]; then
   echo "scan: no secret lines to look for (is $root the instructors' checkout?)" >&2
   exit 1
@@ -54,6 +65,18 @@ while IFS= read -r -d '' file; do
     found=1
   fi
 done < <(find "$dest" -type f -print0)
+
+# Helpers that compute the answer, by their name: a definition (not a call) of a function named
+# expected..., correct..., answer..., solution..., oracle..., ideal... in a test's source.
+answer_helper='^[[:space:]]*([A-Za-z_][A-Za-z0-9_:<>,]*[[:space:]&*]+)+(expected|correct|answer|solution|oracle|ideal)[A-Z_][A-Za-z0-9_]*[[:space:]]*\([^;]*$'
+while IFS= read -r -d '' file; do
+  if hits="$(grep -nE "$answer_helper" "$file")"; then
+    while IFS= read -r hit; do
+      echo "scan: ${file#"$dest"/}:${hit%%:*}: a helper that computes the answer (public tests compare with numbers computed by hand or with properties): ${hit#*:}" >&2
+    done <<<"$hits"
+    found=1
+  fi
+done < <(find "$dest" -path "$dest/tests/*" -type f \( -name '*.cpp' -o -name '*.h' -o -name '*.inc' \) -print0)
 
 # Hidden images, by content.
 for png in "$root"/tests/golden/hidden/*.png; do

@@ -65,29 +65,74 @@ TEST(GradeCommand, ABadCommandLineExitsWith2) {
   EXPECT_NE(help.output.find("--rubric"), std::string::npos) << help.output;
 }
 
-TEST(GradeCommand, ABadRubricStillWritesResultsWithTheError) {
+TEST(GradeCommand, ABadRubricStopsBeforeAnyBuildWithExit2AndTheLine) {
   const fs::path out = outDir("bad_rubric");
   fs::create_directories(out);
   std::ofstream(out / "bad.toml")
       << "total = 10\n[[item]]\nname = \"a\"\ntests = \"*\"\npoint = 10\n";
   const Outcome r =
       grade(A6_SOURCE_DIR "/solution", out, "--rubric '" + (out / "bad.toml").string() + "'");
-  EXPECT_EQ(r.status, 1) << r.output;
-  const json j = results(out);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("bad.toml:5: unknown key 'point'"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out / "work" / "build")) << "nothing was built";
+  const json j = results(out);  // still there for Gradescope, with the error
   EXPECT_EQ(j["score"], 0);
   const std::string output = j["output"];
   EXPECT_NE(output.find("the rubric is invalid"), std::string::npos) << output;
-  EXPECT_NE(output.find("bad.toml:5: unknown key &#39;point&#39;"), std::string::npos) << output;
-  EXPECT_TRUE(fs::exists(out / "report.html"));
 }
 
-TEST(GradeCommand, AMissingSubmissionScoresZeroWithAReason) {
-  const fs::path out = outDir("missing");
-  const Outcome r = grade("/nonexistent/submission.zip", out);
-  EXPECT_EQ(r.status, 0) << "grading completed: the submission is the problem\n" << r.output;
-  const json j = results(out);
-  EXPECT_EQ(j["score"], 0);
-  EXPECT_NE(j["output"].get<std::string>().find("could not be read"), std::string::npos) << j;
+// A rubric whose item matches no check (its points could never be earned) is refused as early,
+// and --check-rubric says so without grading anything.
+TEST(GradeCommand, ARubricItemThatMatchesNoCheckIsRefusedWithItsLine) {
+  const fs::path out = outDir("rubric_no_match");
+  fs::create_directories(out);
+  std::string rubric = readAll(A6_SOURCE_DIR "/grader/rubric.toml");
+  const std::size_t at = rubric.find("\"Task1Spring.*\"");
+  ASSERT_NE(at, std::string::npos);
+  rubric.replace(at + 1, 11, "Task1Sprung");
+  std::ofstream(out / "typo.toml") << rubric;
+  const std::string file = (out / "typo.toml").string();
+  const Outcome checked =
+      run(std::string(A6_GRADE_COMMAND) + " --check-rubric --rubric '" + file + "'");
+  EXPECT_EQ(checked.status, 2) << checked.output;
+  EXPECT_NE(checked.output.find("item 'Task 1: spring force' matches no check"), std::string::npos)
+      << checked.output;
+  EXPECT_NE(checked.output.find(file + ":"), std::string::npos) << "names the line";
+  const Outcome r = grade(A6_SOURCE_DIR "/solution", out, "--rubric '" + file + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_FALSE(fs::exists(out / "work" / "build")) << "nothing was built";
+
+  const Outcome good = run(std::string(A6_GRADE_COMMAND) + " --check-rubric");
+  EXPECT_EQ(good.status, 0) << good.output;
+  EXPECT_NE(good.output.find("valid"), std::string::npos) << good.output;
+}
+
+// A path that does not exist, an empty folder, an archive that is no archive: one line naming
+// the problem, exit status 2, nothing built; results.json (for Gradescope) says why, score 0.
+TEST(GradeCommand, NoSubmissionToGradeStopsEarlyWithExit2) {
+  const fs::path base = outDir("bad_input");
+  fs::create_directories(base / "empty");
+  std::ofstream(base / "junk.zip") << "PK\x03\x04 not really a zip";
+  const struct {
+    std::string submission, says;
+  } cases[] = {{"/nonexistent/submission.zip", "does not exist"},
+               {(base / "empty").string(), "none of the six task files"},
+               {(base / "junk.zip").string(), "cannot read"}};
+  int n = 0;
+  for (const auto& c : cases) {
+    const fs::path out = base / ("out" + std::to_string(++n));
+    const Outcome r = grade(c.submission, out);
+    EXPECT_EQ(r.status, 2) << c.submission << "\n" << r.output;
+    EXPECT_NE(r.output.find("a6_grade: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("graded with the starter code"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out / "work" / "build")) << "nothing was built for " << c.submission;
+    const json j = results(out);
+    EXPECT_EQ(j["score"], 0);
+    EXPECT_EQ(j["tests"].size(), 0u) << "no item was graded";
+    EXPECT_NE(j["output"].get<std::string>().find("Not graded: "), std::string::npos) << j;
+    EXPECT_NE(j["extra_data"]["refused"].get<std::string>().find(c.says), std::string::npos);
+  }
 }
 
 TEST(GradeSubmission, TheSolutionGetsFullMarksAndTheExtraCredit) {

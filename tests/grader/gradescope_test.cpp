@@ -144,7 +144,11 @@ void expectValidResults(const json& r) {
     EXPECT_TRUE(r["extra_data"].is_object());
   }
   ASSERT_TRUE(r.contains("tests") && r["tests"].is_array()) << r.dump(2);
-  ASSERT_FALSE(r["tests"].empty()) << "no tests";
+  // Without tests the score must be there (a submission with nothing to grade: a6_grade exit 2).
+  if (r["tests"].empty()) {
+    ASSERT_TRUE(r.contains("score") && r["score"].is_number()) << r.dump(2);
+    return;
+  }
   double sum = 0;
   for (const json& t : r["tests"]) {
     ASSERT_TRUE(t.is_object()) << t;
@@ -456,7 +460,7 @@ TEST(Gradescope, AnEmptySubmissionGetsZeroAndIsToldWhichFilesWereMissing) {
   ASSERT_FALSE(j.is_discarded());
   EXPECT_EQ(j["score"].get<double>(), 0);
   const std::string output = j.value("output", "");
-  EXPECT_TRUE(contains(output, "Not found")) << output;
+  EXPECT_TRUE(contains(output, "Not graded: none of the six task files")) << output;
   for (const std::string& f : kTaskFiles) EXPECT_TRUE(contains(output, f)) << f << "\n" << output;
 }
 

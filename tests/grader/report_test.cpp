@@ -259,6 +259,31 @@ TEST(ResultsJson, VisibilityComesFromTheRubric) {
   EXPECT_EQ(r["tests"][3]["tags"], json::array({"task6", "all_or_nothing"}));
 }
 
+// What a student sees before the due date (the top-level output, the visible items) is the same
+// whatever the items shown later scored: the total counts the visible items only, and says so.
+TEST(ResultsJson, TheVisibleOutputDoesNotRevealLaterItems) {
+  const GradeReport failing = sampleReport();
+  GradeReport passing = failing;
+  for (TestOutcome& t : passing.tests) t.passed = t.passed || t.name.rfind("Task1", 0) != 0;
+  score(passing, rubric());
+  ASSERT_NE(passing.score, failing.score);
+  const json a = json::parse(resultsJson(failing)), b = json::parse(resultsJson(passing));
+  EXPECT_EQ(a["output"], b["output"]);
+  for (std::size_t i = 0; i < a["tests"].size(); ++i) {
+    if (a["tests"][i]["visibility"] == "visible") {
+      EXPECT_EQ(a["tests"][i], b["tests"][i]) << i;
+    }
+  }
+  const std::string output = a["output"];
+  EXPECT_NE(output.find("Score on the items shown now: 10 / 15 (+3 extra credit)"),
+            std::string::npos)
+      << output;
+  EXPECT_NE(output.find("Not counted here: 2 items worth 15 points"), std::string::npos) << output;
+  EXPECT_EQ(output.find("14.5"), std::string::npos) << "the whole total leaks: " << output;
+  // The instructors' figures stay whole.
+  EXPECT_EQ(a["score"], 17.5);
+}
+
 TEST(ResultsJson, ATaskOnTheStarterShowsTheCompilerMessages) {
   const json r = json::parse(resultsJson(sampleReport()));
   const std::string cloth = r["tests"][2]["output"];

@@ -1,0 +1,212 @@
+#!/usr/bin/env bash
+# One command per instructor job, each doing all the job needs and checking the result
+# (docs/instructor.md says when to use which):
+#
+#   scripts/instructor.sh rerender [--into DIR]
+#       after changing a scene, its constants, the renderer or the palette: rebuilds everything
+#       that depends on them (the renderer, the golden tests, a6_grade, the viewer), re-renders
+#       every reference image from the solution into tests/golden/ and tests/golden/hidden/ (or
+#       into DIR, leaving the committed ones alone), says which images changed and which scene
+#       descriptions ("shows" in the manifests) to re-read, and runs the golden tests.
+#   scripts/instructor.sh hidden-check
+#       after adding or changing a TEST(Task<N>Hidden, ...) in tests/hidden/*_test.cpp: rebuilds
+#       a6_grade and the suite, names the new checks and the rubric item each counts for, and
+#       checks that the solution passes every hidden check and the starter fails them.
+#   scripts/instructor.sh rubric [FILE]
+#       after changing the rubric (default grader/rubric.toml): checks it against every check
+#       (each problem with its line and the fix, before anything runs), then grades the
+#       solution and the starter with it: full marks and nothing.
+#
+# Exit status: 0 when the job is done and checked, 1 when a check failed, 2 for a bad command.
+set -uo pipefail
+cd "$(dirname "$0")/.." || exit 1
+build=build
+
+usage() {
+  sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2
+  exit 2
+}
+
+# Configures when needed and builds TARGET (default: everything); prints how many steps ran.
+rebuild() {
+  local log
+  log="$(mktemp)"
+  if [ ! -f "$build/CMakeCache.txt" ]; then cmake --preset default >/dev/null || return 1; fi
+  if ! cmake --build "$build" ${1:+--target "$@"} >"$log" 2>&1; then
+    tail -30 "$log"
+    echo "instructor: the build failed (above)"
+    rm -f "$log"
+    return 1
+  fi
+  local steps
+  steps=$(grep -c '^\[[0-9]*/[0-9]*\]' "$log")
+  echo "rebuilt: $steps build steps${1:+ for $*}$( [ "$steps" -eq 0 ] && echo " (everything was up to date)")"
+  rm -f "$log"
+}
+
+# The images of a manifest (name, scene, shows), one per line, tab-separated.
+manifest_images() {
+  jq -r '.images[] | [.name, .scene, (.shows // "")] | @tsv' "$1"
+}
+
+# rerender_set FROM TO: renders FROM's manifest into TO (FROM itself when they are the same);
+# prints the images that changed, and returns 1 when rendering failed.
+rerender_set() {
+  local from="$1" to="$2" saved
+  saved="$(mktemp -d)"
+  cp "$from"/*.png "$saved/" 2>/dev/null
+  mkdir -p "$to"
+  [ "$from" -ef "$to" ] || cp "$from/manifest.json" "$to/"
+  if ! "$build/framework/render/a6_render_solution" --goldens --golden-dir "$to" >"$saved/render.log" 2>&1; then
+    tail -5 "$saved/render.log"
+    echo "instructor: rendering $from failed"
+    rm -rf "$saved"
+    return 1
+  fi
+  local changed=0 total=0 name scene shows
+  while IFS=$'\t' read -r name scene shows; do
+    total=$((total + 1))
+    if ! cmp -s "$to/$name.png" "$saved/$name.png"; then
+      changed=$((changed + 1))
+      echo "  changed: $name.png ($scene): re-read its description: \"$shows\""
+    fi
+  done < <(manifest_images "$from/manifest.json")
+  echo "$from: $total images rendered into $to, $changed changed"
+  rm -rf "$saved"
+}
+
+# Scenes whose source changed since the last commit, while their manifest entries did not.
+stale_descriptions() {
+  local changed
+  changed="$(git diff --name-only HEAD -- framework/scenes framework/render 2>/dev/null)"
+  [ -n "$changed" ] || return 0
+  if git diff --quiet HEAD -- tests/golden/manifest.json tests/golden/hidden/manifest.json 2>/dev/null; then
+    echo "note: these changed since the last commit, the manifests' descriptions did not:"
+    sed 's/^/  /' <<<"$changed"
+    echo "  re-read the \"shows\" and \"hint\" of their images (and docs/handout.md's scene table)"
+  fi
+}
+
+job_rerender() {
+  local into=""
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --into) into="${2:?--into needs a folder}"; shift 2 ;;
+      *) usage ;;
+    esac
+  done
+  command -v jq >/dev/null || { echo "instructor: jq is missing (scripts/install-deps.sh)"; return 1; }
+  echo "=== 1. rebuild what depends on the scenes (everything that changed) ==="
+  rebuild || return 1
+  [ -x "$build/framework/render/a6_render_solution" ] ||
+    { echo "instructor: no a6_render_solution in $build (no headless GL?)"; return 1; }
+  echo "=== 2. re-render the reference images from the solution ==="
+  local status=0
+  rerender_set tests/golden "${into:-tests/golden}" || status=1
+  if [ -d tests/golden/hidden ]; then
+    rerender_set tests/golden/hidden "${into:+$into/hidden}" || status=1
+  fi
+  [ -n "$into" ] || stale_descriptions
+  if [ -n "$into" ]; then
+    echo "=== 3. (--into: the committed images were left alone; nothing to test) ==="
+    return "$status"
+  fi
+  echo "=== 3. the golden tests against the new images ==="
+  if ctest --test-dir "$build" -L golden --output-on-failure >"$build/instructor-golden.log" 2>&1; then
+    grep -E 'tests passed|tests failed' "$build/instructor-golden.log"
+  else
+    grep -E 'tests passed|tests failed|\*\*\*Failed|Failed  ' "$build/instructor-golden.log" | head -20
+    echo "instructor: golden tests failed (whole log: $build/instructor-golden.log)"
+    status=1
+  fi
+  echo "next: look at each changed image, then: git add tests/golden && git commit;" \
+    "scripts/main.sh re-exports the student release and the Gradescope zip"
+  return "$status"
+}
+
+job_hidden_check() {
+  [ $# -eq 0 ] || usage
+  local before after
+  before="$(mktemp)" after="$(mktemp)"
+  [ -x "$build/grader/a6_grade" ] && "$build/grader/a6_grade" --list-tests 2>/dev/null |
+    grep -E '^Task[0-9]Hidden\.' | sort >"$before"
+  echo "=== 1. rebuild a6_grade and the suite with tests/hidden/ ==="
+  cmake "$build" >/dev/null 2>&1 || cmake --preset default >/dev/null || return 1
+  rebuild a6_grade a6_tests || return 1
+  "$build/grader/a6_grade" --list-tests 2>/dev/null | grep -E '^Task[0-9]Hidden\.' | sort >"$after"
+  echo "=== 2. the hidden checks and their rubric items ==="
+  local added
+  added="$(comm -13 <(cut -f1 "$before") <(cut -f1 "$after"))"
+  echo "$(wc -l <"$after") hidden checks; new since the last build: ${added:-none}"
+  sed 's/\t/  ->  /; s/^/  /' "$after"
+  local status=0
+  if grep -q $'\t-$' "$after"; then
+    echo "instructor: a hidden check above counts for no rubric item: add a glob to an item" \
+      "of grader/rubric.toml (scripts/instructor.sh rubric checks it)"
+    status=1
+  fi
+  rm -f "$before" "$after"
+  echo "=== 3. the solution must pass them, the starter fail them ==="
+  local out=out/instructor/hidden-check
+  rm -rf "$out"
+  "$build/grader/a6_grade" solution --out "$out/solution" --tests '*Hidden*' --quiet >"$out.solution.log" 2>&1
+  "$build/grader/a6_grade" starter --out "$out/starter" --tests '*Hidden*' --quiet >"$out.starter.log" 2>&1
+  local failed passed
+  failed="$(jq -r '.extra_data.tests | to_entries[] | select(.value != "passed") | .key' "$out/solution/results.json")"
+  passed="$(jq -r '.extra_data.tests | to_entries[] | select(.value == "passed") | .key' "$out/starter/results.json")"
+  if [ -n "$failed" ]; then
+    echo "instructor: the solution fails these hidden checks (see $out/solution/report.html):"
+    sed 's/^/  /' <<<"$failed"
+    status=1
+  else
+    echo "the solution passes all $(jq '.extra_data.tests | length' "$out/solution/results.json") hidden checks"
+  fi
+  if [ -n "$passed" ]; then
+    echo "instructor: the starter passes these hidden checks, so they test nothing:"
+    sed 's/^/  /' <<<"$passed"
+    status=1
+  else
+    echo "the starter fails every one"
+  fi
+  return "$status"
+}
+
+job_rubric() {
+  [ $# -le 1 ] || usage
+  local rubric="${1:-grader/rubric.toml}"
+  echo "=== 1. the rubric against every check ==="
+  [ -x "$build/grader/a6_grade" ] || { rebuild a6_grade || return 1; }
+  "$build/grader/a6_grade" --check-rubric --rubric "$rubric" || return 2
+  echo "=== 2. the solution and the starter graded with it ==="
+  local out=out/instructor/rubric status=0
+  rm -rf "$out"
+  "$build/grader/a6_grade" solution --out "$out/solution" --rubric "$rubric" --quiet |
+    sed -n '1,/^  total/p'
+  if jq -e '[.tests[] | select(.status != "passed")] | length > 0' "$out/solution/results.json" >/dev/null; then
+    echo "instructor: the solution loses points with this rubric (see $out/solution/report.html)"
+    status=1
+  fi
+  "$build/grader/a6_grade" starter --out "$out/starter" --rubric "$rubric" --quiet >/dev/null
+  local starter
+  starter="$(jq '.score' "$out/starter/results.json")"
+  echo "the starter scores $starter"
+  if [ "$starter" != "0" ] && [ "$starter" != "0.0" ]; then
+    echo "instructor: the starter earns points with this rubric"
+    status=1
+  fi
+  [ "$rubric" -ef grader/rubric.toml ] ||
+    echo "note: a6_grade uses grader/rubric.toml unless given --rubric: copy $rubric there to make it the default"
+  echo "next: scripts/main.sh re-exports the student release (its public rubric) and the Gradescope zip"
+  return "$status"
+}
+
+[ $# -ge 1 ] || usage
+job="$1"
+shift
+case "$job" in
+  rerender) job_rerender "$@" ;;
+  hidden-check) job_hidden_check "$@" ;;
+  rubric) job_rubric "$@" ;;
+  -h | --help) usage ;;
+  *) usage ;;
+esac
