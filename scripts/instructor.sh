@@ -17,10 +17,13 @@
 #       (each problem with its line and the fix, before anything runs), then grades the
 #       solution and the starter with it: full marks and nothing.
 #
-# Exit status: 0 when the job is done and checked, 1 when a check failed, 2 for a bad command.
+# Exit status: 0 when the job is done and checked, 1 when a check failed, 2 for a bad command
+# or a rubric that cannot be used. The build folder is build/ (the default preset), or
+# $A6_BUILD_DIR; the outputs go to out/instructor/, or $A6_INSTRUCTOR_OUT.
 set -uo pipefail
 cd "$(dirname "$0")/.." || exit 1
-build=build
+build="${A6_BUILD_DIR:-build}"
+outputs="${A6_INSTRUCTOR_OUT:-out/instructor}"
 
 usage() {
   sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2
@@ -40,7 +43,7 @@ rebuild() {
   fi
   local steps
   steps=$(grep -c '^\[[0-9]*/[0-9]*\]' "$log")
-  echo "rebuilt: $steps build steps${1:+ for $*}$( [ "$steps" -eq 0 ] && echo " (everything was up to date)")"
+  echo "rebuilt: $steps build steps${1:+ for $*}$([ "$steps" -eq 0 ] && echo " (all up to date)")"
   rm -f "$log"
 }
 
@@ -104,7 +107,7 @@ job_rerender() {
   local status=0
   rerender_set tests/golden "${into:-tests/golden}" || status=1
   if [ -d tests/golden/hidden ]; then
-    rerender_set tests/golden/hidden "${into:+$into/hidden}" || status=1
+    rerender_set tests/golden/hidden "${into:-tests/golden}/hidden" || status=1
   fi
   [ -n "$into" ] || stale_descriptions
   if [ -n "$into" ]; then
@@ -147,10 +150,11 @@ job_hidden_check() {
   fi
   rm -f "$before" "$after"
   echo "=== 3. the solution must pass them, the starter fail them ==="
-  local out=out/instructor/hidden-check
+  local out="$outputs/hidden-check"
   rm -rf "$out"
-  "$build/grader/a6_grade" solution --out "$out/solution" --tests '*Hidden*' --quiet >"$out.solution.log" 2>&1
-  "$build/grader/a6_grade" starter --out "$out/starter" --tests '*Hidden*' --quiet >"$out.starter.log" 2>&1
+  mkdir -p "$out"
+  "$build/grader/a6_grade" solution --out "$out/solution" --tests '*Hidden*' --quiet >"$out/solution.log" 2>&1
+  "$build/grader/a6_grade" starter --out "$out/starter" --tests '*Hidden*' --quiet >"$out/starter.log" 2>&1
   local failed passed
   failed="$(jq -r '.extra_data.tests | to_entries[] | select(.value != "passed") | .key' "$out/solution/results.json")"
   passed="$(jq -r '.extra_data.tests | to_entries[] | select(.value == "passed") | .key' "$out/starter/results.json")"
@@ -159,7 +163,8 @@ job_hidden_check() {
     sed 's/^/  /' <<<"$failed"
     status=1
   else
-    echo "the solution passes all $(jq '.extra_data.tests | length' "$out/solution/results.json") hidden checks"
+    echo "the solution passes all $(jq '.extra_data.tests | length' "$out/solution/results.json")" \
+      "hidden checks and images"
   fi
   if [ -n "$passed" ]; then
     echo "instructor: the starter passes these hidden checks, so they test nothing:"
@@ -178,7 +183,7 @@ job_rubric() {
   [ -x "$build/grader/a6_grade" ] || { rebuild a6_grade || return 1; }
   "$build/grader/a6_grade" --check-rubric --rubric "$rubric" || return 2
   echo "=== 2. the solution and the starter graded with it ==="
-  local out=out/instructor/rubric status=0
+  local out="$outputs/rubric" status=0
   rm -rf "$out"
   "$build/grader/a6_grade" solution --out "$out/solution" --rubric "$rubric" --quiet |
     sed -n '1,/^  total/p'

@@ -7,6 +7,8 @@
 // so the step is part of the scene.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "a6/joints.h"
 #include "scenes/box2d_scenes.h"
@@ -267,9 +269,13 @@ Entry entry(SceneInfo info, Camera camera) {
 }  // namespace
 
 void scene_registry::addBox2DScenes(std::vector<Entry>& out) {
+  // The angle from the scene's own constant: the description follows a change of it.
+  char angle[32];
+  std::snprintf(angle, sizeof angle, "%g", static_cast<double>(box2d_params::kPendulumAngle));
   out.push_back(entry({"pendulum", "Box2D: pendulum",
-                       "A bob on a revolute joint, released 0.1 rad from the vertical: it swings "
-                       "with the period 2π sqrt(L/g) of a simple pendulum."},
+                       std::string("A bob on a revolute joint, released ") + angle +
+                           " rad from the vertical: it swings with the period 2π sqrt(L/g) of a "
+                           "simple pendulum."},
                       {View{Vec2(0, 1.45), 1.4}}));
   out.push_back(entry({"rope", "Box2D: rope",
                        "A bob on a rope (a distance joint with a maximum length): it falls "
