@@ -879,7 +879,8 @@ int main(int argc, char** argv) {
   Options options;
   CLI::App app{"a6_grade: grades one Assignment 6 submission (docs/instructor.md)"};
   app.add_option("submission", options.submission,
-                 "the submission: a folder, a .zip, a .tar or .tar.gz");
+                 "the submission: a folder, or an archive (zip, tar, tar.gz or tgz, tar.bz2, "
+                 "tar.xz; recognised by content), or one task file");
   app.add_option("--out", options.out, "where results.json and report.html go (created)");
   app.add_option("--rubric", options.rubric, "the rubric (default: grader/rubric.toml)");
   app.add_option("--seed", options.seed,

@@ -1,0 +1,223 @@
+#!/usr/bin/env bash
+# The example outputs in the docs, made from real runs so that they cannot drift:
+#
+#   scripts/docs-examples.sh            check: every example is what the programs print today
+#   scripts/docs-examples.sh --update   rewrite the examples from a fresh run
+#
+# An example is a fenced block right after a marker line `<!-- example: ID -->` in README.md,
+# docs/*.md or grader/release/README.md; example_ID below makes its text. The check compares
+# after masking what changes from run to run (durations, memory, dates). It also checks the
+# facts the prose states (counts of tests, images, checks: see check_facts), and that the
+# handout's table of reference images says what the manifests say.
+#
+# Needs the instructors' build (build/, or $A6_BUILD_DIR) with the grader, and jq.
+# Exit status: 0 all true, 1 something differs (the difference is printed), 2 bad use.
+set -uo pipefail
+cd "$(dirname "$0")/.." || exit 1
+root="$(pwd)"
+build="$(cd "${A6_BUILD_DIR:-build}" 2>/dev/null && pwd)" || {
+  echo "docs-examples: no build folder ${A6_BUILD_DIR:-build} (scripts/test.sh makes it)" >&2
+  exit 2
+}
+mode=check
+case "${1:-}" in
+  "") ;;
+  --update) mode=update ;;
+  *) sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2 ;;
+esac
+grade="$build/grader/a6_grade"
+[ -x "$grade" ] || { echo "docs-examples: no $grade (build the grader first)" >&2; exit 2; }
+command -v jq >/dev/null || { echo "docs-examples: jq is missing (scripts/install-deps.sh)" >&2; exit 2; }
+
+# Inside the build folder, open to all: the sandbox's user must reach the submissions.
+scratch="$(mktemp -d "$build/docs-examples.XXXXXX")"
+chmod 755 "$scratch"
+trap 'rm -rf "$scratch"' EXIT
+docs=(README.md docs/*.md grader/release/README.md)
+failures=0
+fail() {
+  echo "docs-examples: $*" >&2
+  failures=$((failures + 1))
+}
+
+# ---- the runs the examples come from ---------------------------------------------------------
+
+# "alice": the solution with task 1's sign wrong and a cloth.cpp that does not compile, graded
+# with seed 7 from a folder where its path reads submissions/alice.
+alice_graded() {
+  [ -f "$scratch/graded/alice/results.json" ] && return 0
+  mkdir -p "$scratch/submissions/alice"
+  cp solution/*.cpp "$scratch/submissions/alice/"
+  cp tests/wrong/t1_wrong_sign/spring.cpp "$scratch/submissions/alice/"
+  printf '\nint unfinished = ;\n' >>"$scratch/submissions/alice/cloth.cpp"
+  (cd "$scratch" && "$grade" submissions/alice --out graded/alice --seed 7 --quiet >alice.out 2>&1)
+}
+
+# (Without the note a checkout under a folder of mode 0700 adds: a fact of the machine.)
+example_grade_summary() {
+  alice_graded
+  grep -v "cannot be entered by the sandbox's user" "$scratch/alice.out" | sed "s|$scratch/||g"
+}
+
+# results.json, shortened: the top level, three entries (a failed one, extra credit, one shown
+# after the due date) with their outputs cut, and two checks of extra_data.tests.
+example_results_json() {
+  alice_graded
+  jq '(.tests |= [.[] | select(.number == "1.2" or .number == "1.3" or .number == "4.1")]
+        | .tests[].output |= (if length > 300 then .[0:300] + "..." else . end)
+        | .extra_data.tests |= (to_entries | .[0:2] | from_entries + {"...": "..."})
+        | .extra_data.notes |= map(select(contains("cannot be entered") | not)))' \
+    "$scratch/graded/alice/results.json"
+}
+
+example_rubric_errors() {
+  sed -e '0,/^points = 12$/s//point = 12/' -e '0,/^visibility = "visible"$/s//visibility = "secret"/' \
+    grader/rubric.toml >"$scratch/rubric.toml"
+  sed -i '0,/^points = 12$/s//points = 7/' "$scratch/rubric.toml"
+  (cd "$scratch" && "$grade" --check-rubric --rubric rubric.toml 2>&1)
+}
+
+example_check_rubric() {
+  "$grade" --check-rubric 2>&1 | sed "s|$root/||"
+}
+
+# A Gradescope export of two submissions: Jane Doe's (the solution) and Bob Smith's (alice's).
+example_gradebook() {
+  alice_graded
+  local export="$scratch/export"
+  mkdir -p "$export/submission_1001" "$export/submission_1002"
+  cp solution/*.cpp "$export/submission_1001/"
+  cp "$scratch"/submissions/alice/*.cpp "$export/submission_1002/"
+  cat >"$export/submission_metadata.yml" <<'YAML'
+submission_1001:
+  :submitters:
+  - :name: Jane Doe
+    :email: jane@example.edu
+    :sid: '1001'
+submission_1002:
+  :submitters:
+  - :name: Smith, Bob
+    :email: bob@example.edu
+    :sid: '1002'
+YAML
+  (cd "$scratch" && "$build/grader/a6_batch" export --out batch -j 2 >batch.out 2>batch.err)
+  tr -d '\r' <"$scratch/batch/gradebook.csv"  # (CSV lines end in CR LF)
+}
+
+example_batch_summary() {
+  [ -f "$scratch/batch.out" ] || example_gradebook >/dev/null
+  sed "s|$scratch/||g" "$scratch/batch.out"
+}
+
+example_student_summary() {
+  "$build/tests/a6_tests_starter" 2>/dev/null | sed -n '/^Summary by task$/,/^A6-SUMMARY/p' | sed '$d'
+}
+
+example_failure_message() {
+  "$build/tests/a6_tests_wrong_t1_wrong_sign" --gtest_filter=Task1Spring.StretchedPullsP2TowardsP1 2>&1 |
+    sed -n '/^Task 1 (spring.cpp)/,/hint:/p'
+}
+
+# ---- markers and blocks ----------------------------------------------------------------------
+
+# What changes from one run to the next, masked for the comparison.
+mask() {
+  sed -E -e 's/[0-9]+(\.[0-9]+)? s\b/N s/g' -e 's/"(execution_time|seconds|grader_peak_rss_mib)": [0-9.]+/"\1": N/g' \
+    -e 's/,[0-9]+(\.[0-9]+)?$/,N/' -e 's/\b([0-9]+m)?[0-9]+s\b|\b[0-9]+h[0-9]+m\b/N/g'
+}
+
+# Writes FILE with each marked block's body replaced by its example's text, to stdout.
+render_doc() {
+  local file="$1" line id="" in_block=0
+  while IFS= read -r line || [ -n "$line" ]; do
+    if [ "$in_block" = 1 ]; then
+      [[ "$line" == '```'* ]] && { printf '%s\n' "$line"; in_block=0; }
+      continue
+    fi
+    printf '%s\n' "$line"
+    if [[ "$line" =~ ^\<!--\ example:\ ([a-z0-9_-]+)\ --\>$ ]]; then
+      id="${BASH_REMATCH[1]}"
+    elif [ -n "$id" ] && [[ "$line" == '```'* ]]; then
+      local fn="example_${id//-/_}"
+      if declare -F "$fn" >/dev/null; then
+        "$fn"
+      else
+        echo "docs-examples: $file: no example named $id" >&2
+        echo "(no example named $id)"
+      fi
+      in_block=1
+      id=""
+    else
+      id=""
+    fi
+  done <"$file"
+}
+
+check_examples() {
+  local file n
+  for file in "${docs[@]}"; do
+    n=$(grep -c '^<!-- example: ' "$file")
+    [ "$n" -gt 0 ] || continue
+    render_doc "$file" >"$scratch/new.md"
+    if [ "$mode" = update ]; then
+      cmp -s "$scratch/new.md" "$file" || { cp "$scratch/new.md" "$file"; echo "updated $n examples in $file"; }
+    elif ! diff -u <(mask <"$file") <(mask <"$scratch/new.md") >"$scratch/diff"; then
+      fail "$file: an example differs from what the programs print now (- the doc, + now;" \
+        "scripts/docs-examples.sh --update rewrites it):"$'\n'"$(head -60 "$scratch/diff")"
+    else
+      echo "ok: $file: $n examples as the programs print them"
+    fi
+  done
+}
+
+# ---- facts in the prose ----------------------------------------------------------------------
+
+# fact FILE TEXT: FILE must contain TEXT (a sentence with the true number in it).
+fact() {
+  if grep -qF -- "$2" "$1"; then
+    echo "ok: $1 says \"$2\""
+  else
+    fail "$1 should say \"$2\" (the number is measured; fix the text)"
+  fi
+}
+
+check_facts() {
+  local tests images hidden_images checks public_total golden_tests
+  tests=$(ctest --test-dir "$build" -N | sed -n 's/^Total Tests: //p')
+  golden_tests=$(ctest --test-dir "$build" -N -L golden | sed -n 's/^Total Tests: //p')
+  images=$(jq '.images | length' tests/golden/manifest.json)
+  hidden_images=$(jq '.images | length' tests/golden/hidden/manifest.json)
+  checks=$("$grade" --list-tests 2>/dev/null | wc -l)
+  "$grade" --public-rubric "$scratch/public.toml"
+  public_total=$(sed -n 's/^total = \([0-9]*\)\(\.0*\)\{0,1\}$/\1/p' "$scratch/public.toml")
+  fact README.md "then runs the $tests tests"
+  fact docs/instructor.md "the $images public images"
+  fact docs/instructor.md "the $hidden_images hidden ones"
+  fact docs/instructor.md "(total $public_total instead of 100)"
+  fact docs/instructor.md "all $checks checks"
+  fact docs/rendering.md "holds $images reference images"
+  fact docs/rendering.md "($golden_tests ctest tests"
+}
+
+# The handout's table of reference images: each row's text is its manifest entry's "shows".
+check_handout_images() {
+  local name shows bad=0
+  while IFS=$'\t' read -r name shows; do
+    if ! grep -qF -- "\`$name\`" docs/handout.md; then
+      fail "docs/handout.md: no row for the reference image $name"
+      bad=1
+    elif ! grep -F -- "\`$name\`" docs/handout.md | grep -qF -- "$shows"; then
+      fail "docs/handout.md: the row of $name does not say what tests/golden/manifest.json says: \"$shows\""
+      bad=1
+    fi
+  done < <(jq -r '.images[] | [.name, .shows] | @tsv' tests/golden/manifest.json)
+  [ "$bad" = 1 ] || echo "ok: docs/handout.md describes every reference image as the manifest does"
+}
+
+check_examples
+if [ "$mode" = check ]; then
+  check_facts
+  check_handout_images
+fi
+[ "$failures" -eq 0 ] || { echo "docs-examples: $failures problems" >&2; exit 1; }
+echo "docs-examples: all true"
