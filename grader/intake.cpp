@@ -219,6 +219,7 @@ class Collector {
       out.error = "cannot create the folder " + dest.string() +
                   " for the submission's files: " + ec.message() +
                   " (check that the output folder is writable)";
+      out.graderFault = true;
       return out;
     }
     fs::permissions(dest,
@@ -238,6 +239,7 @@ class Collector {
         if (!file) {
           out.error = "cannot write " + target.string() + ": " + std::strerror(errno) +
                       " (check the output folder: disk full or not writable?)";
+          out.graderFault = true;
           return out;
         }
       }
@@ -267,14 +269,11 @@ class Collector {
       note(std::to_string(entryNotes_ - kMaxEntryNotes) + " more skipped entries are not listed");
     }
     if (!anyEntries) {
-      note("the " + what +
-           " is empty: no task file was found, every task uses the starter's "
-           "stub");
+      note("the " + what + " is empty");
     } else if (out.files.empty()) {
       std::string names;
       for (const std::string& n : kTaskFiles) names += (names.empty() ? "" : ", ") + n;
-      note("no task file was found in the " + what + " (looked for " + names +
-           " at any depth); every task uses the starter's stub" +
+      note("no task file was found in the " + what + " (looked for " + names + " at any depth)" +
            (sawNestedArchive ? ". Archives inside the submission are not opened: submit the "
                                ".cpp files themselves"
                              : ""));

@@ -11,24 +11,27 @@
 namespace a6::grader {
 
 /// The six task files, in task order.
-inline const std::vector<std::string> kTaskFiles = {"spring.cpp", "forces.cpp",
-                                                    "time_stepping.cpp", "cloth.cpp",
+inline const std::vector<std::string> kTaskFiles = {"spring.cpp",          "forces.cpp",
+                                                    "time_stepping.cpp",   "cloth.cpp",
                                                     "particle_system.cpp", "joints.cpp"};
 
 struct Intake {
   std::string error;  ///< non-empty when the submission could not be read at all
+  /// The error is the grader's (its output folder could not be made or written), not the
+  /// submission's: the grading failed, nothing is wrong with what the student handed in.
+  bool graderFault = false;
   std::map<std::string, std::filesystem::path> files;  ///< task file name -> its copy in dest
   std::vector<std::string> notes;  ///< what was skipped or refused, and why (for the report)
   bool ok() const { return error.empty(); }
 };
 
 struct IntakeLimits {
-  std::size_t maxFileBytes = 1u << 20;       ///< a task file larger than this is refused
-  std::size_t maxTotalBytes = 64u << 20;     ///< stop reading an archive after decompressing
-                                             ///< this much (zip entries skipped by seeking and
-                                             ///< never decompressed do not count)
-  std::size_t maxEntries = 10000;            ///< stop reading after this many entries
-  int maxDepth = 32;                         ///< path components; deeper files are skipped
+  std::size_t maxFileBytes = 1u << 20;    ///< a task file larger than this is refused
+  std::size_t maxTotalBytes = 64u << 20;  ///< stop reading an archive after decompressing
+                                          ///< this much (zip entries skipped by seeking and
+                                          ///< never decompressed do not count)
+  std::size_t maxEntries = 10000;         ///< stop reading after this many entries
+  int maxDepth = 32;                      ///< path components; deeper files are skipped
 };
 
 /// Copies the six task files of `submission` (folder, .zip, .tar, .tar.gz, .tgz, .tar.bz2,

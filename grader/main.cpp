@@ -4,6 +4,7 @@
 //            [--time-budget S] [--tests FILTER] [--hide PATH]... [--sandbox-uid UID]
 //            [--quiet] [--color]
 //   a6_grade --list-tests [--rubric FILE]
+//   a6_grade --check-rubric [--rubric FILE]
 //
 // Stages: intake -> build -> run the physics suite (and the golden-image checks) in this process
 // against the sandboxed probe -> score with the rubric -> DIR/results.json (Gradescope),
@@ -11,9 +12,11 @@
 // a6::test::student() is the probe.
 //
 // Exit status: 0 when grading completed, whatever the score (a submission that does not build
-// gets its zero with the reasons in the report); 1 when the grader itself failed (bad rubric,
-// missing kit, an environment that cannot run the checks, a report that could not be written):
-// results.json is still written, with score 0 and the error; 2 for a bad command line.
+// gets its zero with the reasons in the report); 1 when the grader itself failed (missing kit,
+// an environment that cannot run the checks, a report that could not be written): results.json
+// is still written, with score 0 and the error; 2, before any build, when there is nothing to
+// grade (a bad command line, no such submission, no task file in it, an archive that cannot be
+// read) or the rubric cannot be used (invalid, or not matching the checks).
 #include <gtest/gtest.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -131,13 +134,22 @@ class BudgetedStudent final : public harness::StudentCode {
     deadline_ = Clock::now() +
                 std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
     lastFailure_.clear();
-    if (outOfTime_) ++checksOutOfTime_;
-    outOfTime_ = false;
+    closeCheck();
     if (newCheck_) newCheck_();
   }
 
-  /// How many checks were cut short by their time limit or by the time budget.
-  int checksOutOfTime() const { return checksOutOfTime_ + (outOfTime_ ? 1 : 0); }
+  /// How the probes' stopped requests are counted (ProbePair::incidents().timeouts).
+  void setProbeTimeouts(std::function<int()> probeTimeouts) {
+    probeTimeouts_ = std::move(probeTimeouts);
+  }
+
+  /// How many checks ran out of their time (a request stopped at its limit, or the check's
+  /// limit reached between requests), each counted once, plus one when the time budget of all
+  /// checks was spent.
+  int checksOutOfTime() {
+    closeCheck();
+    return checksOutOfTime_ + (budgetSpent_ ? 1 : 0);
+  }
 
   harness::SpringForceResult springForce(const harness::SpringForceRequest& r) override {
     return call<harness::SpringForceResult>([&] { return probe_->springForce(r); });
@@ -178,7 +190,7 @@ class BudgetedStudent final : public harness::StudentCode {
       out << "not run: the checks before it used up the time all checks together may take ("
           << budget_ << " s; their messages say which ran out of time)";
       result.error = out.str();
-      outOfTime_ = true;
+      budgetSpent_ = true;
       return result;
     }
 #ifdef A6_GRADE_HAVE_PROBE
@@ -227,8 +239,21 @@ class BudgetedStudent final : public harness::StudentCode {
   std::string unavailable_;
   std::string lastFailure_;  // the last failed request of the running check
   std::string startError_;
-  bool outOfTime_ = false;  // the running check ran out of its time, or of the budget
+  // The running check ran out of its time between requests; the probes' time-outs when it began.
+  bool outOfTime_ = false;
+  int timeoutsAtStart_ = 0;
   int checksOutOfTime_ = 0;
+  bool budgetSpent_ = false;
+  std::function<int()> probeTimeouts_;
+
+  // Counts the check that just ended if it ran out of time, once however many of its requests
+  // did.
+  void closeCheck() {
+    const int timeouts = probeTimeouts_ ? probeTimeouts_() : 0;
+    if (outOfTime_ || timeouts > timeoutsAtStart_) ++checksOutOfTime_;
+    timeoutsAtStart_ = timeouts;
+    outOfTime_ = false;
+  }
   double limit_ = kDefaultTimeLimit;
   Clock::time_point deadline_ = Clock::now();
   std::function<std::size_t()> forceAnswers_;
@@ -475,6 +500,15 @@ int checkRubric(const Rubric& rubric) {
   for (const RubricItem& item : rubric.items) {
     if (item.extraCredit) extra += item.points;
     if (item.visibility != Visibility::Visible) ++hidden;
+    // Gradescope hides a student's total while any test is unseen, except tests marked hidden
+    // ("they should only be used for tests which don't contribute points").
+    if (item.visibility == Visibility::Hidden && item.points > 0) {
+      std::fprintf(stderr,
+                   "a6_grade: warning: %s: item '%s' is 'hidden' and has points: Gradescope "
+                   "shows students their total all the same, so these points show in it (use "
+                   "after_due_date or after_published to keep them unseen)\n",
+                   placeOf(rubric, item).c_str(), item.name.c_str());
+    }
   }
   std::printf(
       "%s: valid: %zu items (%d shown to students only later), %g points + %g extra "
@@ -627,10 +661,22 @@ int grade(const Options& options, const Rubric& rubric) {
       return 1;
     }
   }
-  // Input that cannot be graded stops here, before any build: results.json says why (score 0),
-  // the terminal one line per problem, exit status 2.
-  auto refuse = [&](const std::string& why, bool theSubmissions) {
-    (theSubmissions ? report.refused : report.errors.emplace_back()) = why;
+  // What cannot be graded stops here, before any build: results.json says why (score 0), the
+  // terminal one line per problem. Nothing to grade in the submission, or a rubric that cannot
+  // be used: exit status 2; the grader's own failure: 1. The student reads the reason only when
+  // it is the submission's; the rest (it may name hidden checks) goes to the instructors.
+  enum class Stop { NothingToGrade, UnusableRubric, GraderFailed };
+  auto stop = [&](Stop kind, const std::string& why) {
+    if (kind == Stop::NothingToGrade) {
+      report.refused = why;
+    } else {
+      report.errors.push_back(why);
+      report.refused = kind == Stop::UnusableRubric
+                           ? "the grader's rubric cannot be used (a grader problem, not yours: "
+                             "your instructor has been told)"
+                           : "the grader could not take your files in (a grader problem, not "
+                             "yours: your instructor has been told)";
+    }
     for (const std::string& e :
          {writeResultsJson(report, results), writeHtml(report, out / "report.html")}) {
       if (!e.empty()) std::fprintf(stderr, "a6_grade: %s\n", e.c_str());
@@ -638,9 +684,11 @@ int grade(const Options& options, const Rubric& rubric) {
     std::error_code ignored;
     if (!scratch.empty()) fs::remove_all(scratch, ignored);
     std::fprintf(stderr, "a6_grade: %s\n", why.c_str());
-    return 2;
+    for (const std::string& note : report.intake.notes)
+      std::fprintf(stderr, "a6_grade:   note: %s\n", note.c_str());
+    return kind == Stop::GraderFailed ? 1 : 2;
   };
-  if (!rubric.ok()) return refuse("the rubric is invalid:\n" + rubric.error, false);
+  if (!rubric.ok()) return stop(Stop::UnusableRubric, "the rubric is invalid:\n" + rubric.error);
 
   // The sandbox's user, ours alone for this grading (grader/process.h).
   std::string claimError;
@@ -674,18 +722,21 @@ int grade(const Options& options, const Rubric& rubric) {
     report.intake = takeSubmission(options.submission, work / "src");
   } catch (const std::exception& e) {
     report.intake.error = std::string("reading the submission failed: ") + e.what();
+    report.intake.graderFault = true;
   }
 #else
   report.intake.error = "this a6_grade was built without the intake library (grader/intake.cpp)";
   fail(report.intake.error);
 #endif
-  if (!report.intake.ok()) return refuse(report.intake.error, true);
+  if (!report.intake.ok()) {
+    return stop(report.intake.graderFault ? Stop::GraderFailed : Stop::NothingToGrade,
+                report.intake.error);
+  }
   if (report.intake.files.empty()) {
-    return refuse(
-        "none of the six task files (spring.cpp, forces.cpp, time_stepping.cpp, "
-        "cloth.cpp, particle_system.cpp, joints.cpp) is in " +
-            options.submission + ": nothing to grade",
-        true);
+    return stop(Stop::NothingToGrade,
+                "none of the six task files (spring.cpp, forces.cpp, time_stepping.cpp, "
+                "cloth.cpp, particle_system.cpp, joints.cpp) could be taken from " +
+                    options.submission + ": nothing to grade");
   }
   report.seed = options.seed ? *options.seed : seedOf(report.intake.files);
 
@@ -705,7 +756,7 @@ int grade(const Options& options, const Rubric& rubric) {
   if (const std::vector<std::string> problems = coverageProblems(rubric); !problems.empty()) {
     std::string why = "the rubric does not fit the checks:";
     for (const std::string& p : problems) why += "\n" + p;
-    return refuse(why, false);
+    return stop(Stop::UnusableRubric, why);
   }
 
   // 2. Build.
@@ -740,6 +791,8 @@ int grade(const Options& options, const Rubric& rubric) {
 #ifdef A6_GRADE_HAVE_PROBE
       else {
         unavailable = checkStartup(kit, report, work, secrets);
+        // No program could start at all: every check fails at once, a TA should look.
+        if (!unavailable.empty()) ++report.incidents.startFailures;
       }
 #endif
     }
@@ -757,6 +810,7 @@ int grade(const Options& options, const Rubric& rubric) {
   std::function<void(double)> setTimeout;
   std::function<void()> newCheck;
   std::function<std::size_t()> forceAnswers;
+  std::function<int()> probeTimeouts;
 #ifdef A6_GRADE_HAVE_PROBE
   if (unavailable.empty()) {
     try {
@@ -773,6 +827,7 @@ int grade(const Options& options, const Rubric& rubric) {
       ProbePair* raw = pair.get();
       setTimeout = [raw](double seconds) { raw->setRequestTimeout(seconds); };
       forceAnswers = [raw] { return raw->forceAnswers(); };
+      probeTimeouts = [raw] { return raw->incidents().timeouts; };
       newCheck = [raw] { raw->allowMoreStarts(kStartsPerCheck); };
       probe = std::move(pair);
     } catch (const std::exception& e) {
@@ -788,6 +843,7 @@ int grade(const Options& options, const Rubric& rubric) {
 #endif
   BudgetedStudent student(probe.get(), setTimeout, newCheck, unavailable);
   if (forceAnswers) student.setForceAnswers(forceAnswers);
+  if (probeTimeouts) student.setProbeTimeouts(probeTimeouts);
   student.setTotalBudget(options.timeBudget);
   gStudent = &student;
   int skipped = 0;
@@ -821,8 +877,8 @@ int grade(const Options& options, const Rubric& rubric) {
       for (const std::string& note : client->notes()) report.notes.push_back("sandbox: " + note);
       const ProbeIncidents incidents = client->incidents();
       report.incidents.crashes = incidents.crashes;
-      report.incidents.timeouts = incidents.timeouts + student.checksOutOfTime();
-      report.incidents.startFailures = incidents.startFailures;
+      report.incidents.timeouts = student.checksOutOfTime();
+      report.incidents.startFailures += incidents.startFailures;
       if (client->restarts() > 0) {
         report.notes.push_back("the probes were restarted " + std::to_string(client->restarts()) +
                                " times (after crashes or time limits)");

@@ -150,8 +150,10 @@ std::string visibleScoreLine(const GradeReport& report) {
                      fmt(v.score) + " / " + fmt(v.max);
   if (v.extraCredit > 0) line += " (+" + fmt(v.extraCredit) + " extra credit)";
   if (v.laterItems > 0) {
-    line += "\nNot counted here: " + std::to_string(v.laterItems) + " items worth " +
-            fmt(v.laterPoints) + " points (checks on new inputs), shown after the due date";
+    line += "\nNot counted here: " + std::to_string(v.laterItems) +
+            (v.laterItems == 1 ? " item" : " items") + " worth " + fmt(v.laterPoints) + " points" +
+            (v.laterExtraCredit > 0 ? " (+" + fmt(v.laterExtraCredit) + " extra credit)" : "") +
+            ", shown to you later (after the due date, or when the grades are published)";
   }
   return line + "\n";
 }
@@ -160,7 +162,9 @@ std::string overallOutput(const GradeReport& report) {
   std::ostringstream out;
   if (!report.rubricTitle.empty()) out << report.rubricTitle << "\n";
   if (!report.refused.empty()) {
-    out << "Score: 0 / " << fmt(report.maxScore) << "\nNot graded: " << report.refused << "\n";
+    out << "Score: 0" << (report.maxScore > 0 ? " / " + fmt(report.maxScore) : "")
+        << "\nNot graded: " << report.refused << "\n";
+    for (const std::string& note : report.intake.notes) out << "Note: " << note << "\n";
     return out.str();
   }
   out << visibleScoreLine(report);
@@ -225,7 +229,7 @@ VisibleTotals visibleTotals(const GradeReport& report) {
   for (const ScoredItem& s : report.items) {
     const bool now = s.item.visibility == Visibility::Visible;
     if (!now) {
-      v.laterPoints += s.item.extraCredit ? 0 : s.item.points;
+      (s.item.extraCredit ? v.laterExtraCredit : v.laterPoints) += s.item.points;
       ++v.laterItems;
     } else if (s.item.extraCredit) {
       v.extraCredit += s.score;
@@ -515,7 +519,9 @@ std::string htmlReport(const GradeReport& report) {
   if (!report.refused.empty()) {
     out << "<div class=\"box error\"><b>Not graded</b><p>" << htmlEscape(report.refused)
         << "</p></div>\n";
-  } else if (!report.errors.empty() || !report.build.error.empty() || !report.intake.ok()) {
+  }
+  if (!report.errors.empty() || !report.build.error.empty() ||
+      (!report.intake.ok() && report.refused != report.intake.error)) {
     out << "<div class=\"box error\"><b>Grading problems</b><ul>";
     if (!report.intake.ok()) out << "<li>intake: " << htmlEscape(report.intake.error) << "</li>";
     if (!report.build.error.empty()) {

@@ -79,7 +79,8 @@ struct GradeReport {
 /// "visible" (the others are shown later, or never).
 struct VisibleTotals {
   double score = 0, max = 0, extraCredit = 0;
-  double laterPoints = 0;  ///< regular points of the items not visible yet
+  double laterPoints = 0;       ///< regular points of the items not visible yet
+  double laterExtraCredit = 0;  ///< extra credit of the items not visible yet
   int laterItems = 0;
 };
 VisibleTotals visibleTotals(const GradeReport& report);

@@ -53,10 +53,11 @@ alice_graded() {
   (cd "$scratch" && "$grade" submissions/alice --out graded/alice --seed 7 --quiet >alice.out 2>&1)
 }
 
-# (Without the note a checkout under a folder of mode 0700 adds: a fact of the machine.)
+# (Without the notes on the run, facts of the machine: a checkout under a folder of mode 0700,
+# the sandbox protections a machine without root or namespaces cannot apply.)
 example_grade_summary() {
   alice_graded
-  grep -v "cannot be entered by the sandbox's user" "$scratch/alice.out" | sed "s|$scratch/||g"
+  grep -v '^  note: ' "$scratch/alice.out" | sed "s|$scratch/||g"
 }
 
 # results.json, shortened: the top level, three entries (a failed one, extra credit, one shown
@@ -66,7 +67,7 @@ example_results_json() {
   jq '(.tests |= [.[] | select(.number == "1.2" or .number == "1.3" or .number == "4.1")]
         | .tests[].output |= (if length > 300 then .[0:300] + "..." else . end)
         | .extra_data.tests |= (to_entries | .[0:2] | from_entries + {"...": "..."})
-        | .extra_data.notes |= map(select(contains("cannot be entered") | not)))' \
+        | .extra_data.notes |= [])' \
     "$scratch/graded/alice/results.json"
 }
 

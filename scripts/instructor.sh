@@ -26,15 +26,19 @@ build="${A6_BUILD_DIR:-build}"
 outputs="${A6_INSTRUCTOR_OUT:-out/instructor}"
 
 usage() {
-  sed -n '2,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p}' "$0" >&2
   exit 2
+}
+
+configure() {
+  [ -f "$build/CMakeCache.txt" ] || cmake --preset default -B "$build" >/dev/null
 }
 
 # Configures when needed and builds TARGET (default: everything); prints how many steps ran.
 rebuild() {
   local log
   log="$(mktemp)"
-  if [ ! -f "$build/CMakeCache.txt" ]; then cmake --preset default >/dev/null || return 1; fi
+  configure || return 1
   if ! cmake --build "$build" ${1:+--target "$@"} >"$log" 2>&1; then
     tail -30 "$log"
     echo "instructor: the build failed (above)"
@@ -134,7 +138,8 @@ job_hidden_check() {
   [ -x "$build/grader/a6_grade" ] && "$build/grader/a6_grade" --list-tests 2>/dev/null |
     grep -E '^Task[0-9]Hidden\.' | sort >"$before"
   echo "=== 1. rebuild a6_grade and the suite with tests/hidden/ ==="
-  cmake "$build" >/dev/null 2>&1 || cmake --preset default >/dev/null || return 1
+  # Configured again: the hidden folder's *_test.cpp files are found when configuring.
+  configure && cmake "$build" >/dev/null || return 1
   rebuild a6_grade a6_tests || return 1
   "$build/grader/a6_grade" --list-tests 2>/dev/null | grep -E '^Task[0-9]Hidden\.' | sort >"$after"
   echo "=== 2. the hidden checks and their rubric items ==="
@@ -153,8 +158,19 @@ job_hidden_check() {
   local out="$outputs/hidden-check"
   rm -rf "$out"
   mkdir -p "$out"
-  "$build/grader/a6_grade" solution --out "$out/solution" --tests '*Hidden*' --quiet >"$out/solution.log" 2>&1
-  "$build/grader/a6_grade" starter --out "$out/starter" --tests '*Hidden*' --quiet >"$out/starter.log" 2>&1
+  local who
+  for who in solution starter; do
+    if ! "$build/grader/a6_grade" "$who" --out "$out/$who" --tests '*Hidden*' --quiet \
+      >"$out/$who.log" 2>&1; then
+      tail -5 "$out/$who.log"
+      echo "instructor: a6_grade could not grade $who/ (see $out/$who.log)"
+      return 1
+    fi
+  done
+  if [ "$(jq '.extra_data.tests | length' "$out/solution/results.json")" -eq 0 ]; then
+    echo "instructor: no hidden check ran"
+    return 1
+  fi
   local failed passed
   failed="$(jq -r '.extra_data.tests | to_entries[] | select(.value != "passed") | .key' "$out/solution/results.json")"
   passed="$(jq -r '.extra_data.tests | to_entries[] | select(.value == "passed") | .key' "$out/starter/results.json")"
@@ -180,18 +196,28 @@ job_rubric() {
   [ $# -le 1 ] || usage
   local rubric="${1:-grader/rubric.toml}"
   echo "=== 1. the rubric against every check ==="
-  [ -x "$build/grader/a6_grade" ] || { rebuild a6_grade || return 1; }
+  rebuild a6_grade >/dev/null || return 1
   "$build/grader/a6_grade" --check-rubric --rubric "$rubric" || return 2
   echo "=== 2. the solution and the starter graded with it ==="
-  local out="$outputs/rubric" status=0
+  local out="$outputs/rubric" status=0 who
   rm -rf "$out"
-  "$build/grader/a6_grade" solution --out "$out/solution" --rubric "$rubric" --quiet |
-    sed -n '1,/^  total/p'
-  if jq -e '[.tests[] | select(.status != "passed")] | length > 0' "$out/solution/results.json" >/dev/null; then
-    echo "instructor: the solution loses points with this rubric (see $out/solution/report.html)"
+  mkdir -p "$out"
+  for who in solution starter; do
+    if ! "$build/grader/a6_grade" "$who" --out "$out/$who" --rubric "$rubric" --quiet \
+      >"$out/$who.log" 2>&1; then
+      tail -5 "$out/$who.log"
+      echo "instructor: a6_grade could not grade $who/ with this rubric (see $out/$who.log)"
+      return 1
+    fi
+  done
+  sed -n '1,/^  total/p' "$out/solution.log"
+  # Full marks: every item passed, and the score is the total plus every item's extra credit.
+  if ! jq -e '(.tests | length > 0) and ([.tests[] | select(.status != "passed")] | length == 0)
+              and (.score == .extra_data.max_score + .extra_data.extra_credit)' \
+    "$out/solution/results.json" >/dev/null; then
+    echo "instructor: the solution does not get full marks with this rubric (see $out/solution/report.html)"
     status=1
   fi
-  "$build/grader/a6_grade" starter --out "$out/starter" --rubric "$rubric" --quiet >/dev/null
   local starter
   starter="$(jq '.score' "$out/starter/results.json")"
   echo "the starter scores $starter"

@@ -78,7 +78,10 @@ TEST(GradeCommand, ABadRubricStopsBeforeAnyBuildWithExit2AndTheLine) {
   const json j = results(out);  // still there for Gradescope, with the error
   EXPECT_EQ(j["score"], 0);
   const std::string output = j["output"];
-  EXPECT_NE(output.find("the rubric is invalid"), std::string::npos) << output;
+  EXPECT_NE(output.find("rubric cannot be used (a grader problem, not yours"), std::string::npos)
+      << output;
+  EXPECT_NE(j["extra_data"]["errors"].dump().find("the rubric is invalid"), std::string::npos)
+      << "the details, for instructors";
 }
 
 // A rubric whose item matches no check (its points could never be earned) is refused as early,
@@ -101,6 +104,12 @@ TEST(GradeCommand, ARubricItemThatMatchesNoCheckIsRefusedWithItsLine) {
   const Outcome r = grade(A6_SOURCE_DIR "/solution", out, "--rubric '" + file + "'");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_FALSE(fs::exists(out / "work" / "build")) << "nothing was built";
+  // The student reads that the grader has a problem, never the checks' names (some hidden).
+  const std::string shown = results(out)["output"];
+  EXPECT_NE(shown.find("rubric cannot be used (a grader problem, not yours"), std::string::npos)
+      << shown;
+  EXPECT_EQ(shown.find("Task1Spring."), std::string::npos) << shown;
+  EXPECT_EQ(results(out)["extra_data"]["errors"].size(), 1u) << "the details, for instructors";
 
   const Outcome good = run(std::string(A6_GRADE_COMMAND) + " --check-rubric");
   EXPECT_EQ(good.status, 0) << good.output;
@@ -112,11 +121,15 @@ TEST(GradeCommand, ARubricItemThatMatchesNoCheckIsRefusedWithItsLine) {
 TEST(GradeCommand, NoSubmissionToGradeStopsEarlyWithExit2) {
   const fs::path base = outDir("bad_input");
   fs::create_directories(base / "empty");
+  fs::create_directories(base / "misnamed");
+  std::ofstream(base / "misnamed" / "Spring.cpp") << "// a near miss\n";
   std::ofstream(base / "junk.zip") << "PK\x03\x04 not really a zip";
   const struct {
     std::string submission, says;
   } cases[] = {{"/nonexistent/submission.zip", "does not exist"},
                {(base / "empty").string(), "none of the six task files"},
+               // The intake's notes come along: here, why Spring.cpp was not taken.
+               {(base / "misnamed").string(), "ignored: the name must be exactly"},
                {(base / "junk.zip").string(), "cannot read"}};
   int n = 0;
   for (const auto& c : cases) {
@@ -131,7 +144,7 @@ TEST(GradeCommand, NoSubmissionToGradeStopsEarlyWithExit2) {
     EXPECT_EQ(j["score"], 0);
     EXPECT_EQ(j["tests"].size(), 0u) << "no item was graded";
     EXPECT_NE(j["output"].get<std::string>().find("Not graded: "), std::string::npos) << j;
-    EXPECT_NE(j["extra_data"]["refused"].get<std::string>().find(c.says), std::string::npos);
+    EXPECT_NE(j["output"].get<std::string>().find(c.says), std::string::npos) << j["output"];
   }
 }
 

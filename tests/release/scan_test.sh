@@ -62,6 +62,11 @@ expect_scan 1 "tests/support/more/helpers.h:1: a helper that computes the answer
   "a helper named correct... anywhere under tests/ is refused"
 
 fresh
+printf 'TEST(Task3TimeStepping, Helper) {\n  auto expectedStep = [&](double h) {\n    return h;\n  };\n}\n' \
+  >>"$scratch/release/tests/task3_time_stepping_test.cpp"
+expect_scan 1 "tests/task3_time_stepping_test.cpp:" "a lambda named expected... is refused too"
+
+fresh
 line="$(grep -m1 -E '^[[:space:]]*return .{20,};' "$root/solution/spring.cpp")"
 printf 'TEST(Task1Spring, Helper) {\n%s\n}\n' "$line" >>"$scratch/release/tests/task1_spring_test.cpp"
 expect_scan 1 "tests/task1_spring_test.cpp:" "a line of the solution pasted into a public test is refused"
