@@ -236,6 +236,18 @@ struct Figure {
   double springs = 0, springsPerSecond = 0;
 };
 
+// Whether a run failed or was skipped: Google Benchmark 1.7 says so in Run::error_occurred,
+// 1.8 and later in Run::skipped (error_occurred is gone). The first overload exists only where
+// error_occurred does, and is preferred there (an int argument matches it exactly).
+template <class Run>
+auto didNotRun(const Run& run, int) -> decltype(static_cast<bool>(run.error_occurred)) {
+  return run.error_occurred;
+}
+template <class Run>
+auto didNotRun(const Run& run, long) -> decltype(static_cast<bool>(run.skipped)) {
+  return static_cast<bool>(run.skipped);
+}
+
 class SummaryReporter : public benchmark::ConsoleReporter {
  public:
   using ConsoleReporter::ConsoleReporter;
@@ -248,7 +260,7 @@ class SummaryReporter : public benchmark::ConsoleReporter {
       const bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
       const auto springs = run.counters.find("springs");
       const auto rate = run.counters.find("springs_per_s");
-      if (run.error_occurred || !(median || single) || springs == run.counters.end() ||
+      if (didNotRun(run, 0) || !(median || single) || springs == run.counters.end() ||
           rate == run.counters.end()) {
         continue;
       }
