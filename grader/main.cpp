@@ -41,6 +41,7 @@
 #include <thread>
 
 #include "comparisons.h"
+#include "gtest_flags.h"
 #include "harness/student_code.h"
 #include "process.h"
 #include "report.h"
@@ -394,18 +395,18 @@ void initGoogleTest(std::uint64_t seed, const std::string& filter) {
   static char* argv[] = {program, nullptr};
   int argc = 1;
   ::testing::InitGoogleTest(&argc, argv);
-  GTEST_FLAG_SET(filter, filter.empty() ? std::string("*") : filter);
-  GTEST_FLAG_SET(also_run_disabled_tests, false);
-  GTEST_FLAG_SET(shuffle, false);
-  GTEST_FLAG_SET(repeat, 1);
-  GTEST_FLAG_SET(fail_fast, false);
-  GTEST_FLAG_SET(break_on_failure, false);
-  GTEST_FLAG_SET(throw_on_failure, false);
-  GTEST_FLAG_SET(catch_exceptions, true);
-  GTEST_FLAG_SET(output, std::string());
-  GTEST_FLAG_SET(brief, true);
+  A6_GTEST_FLAG_SET(filter, filter.empty() ? std::string("*") : filter);
+  A6_GTEST_FLAG_SET(also_run_disabled_tests, false);
+  A6_GTEST_FLAG_SET(shuffle, false);
+  A6_GTEST_FLAG_SET(repeat, 1);
+  A6_GTEST_FLAG_SET(fail_fast, false);
+  A6_GTEST_FLAG_SET(break_on_failure, false);
+  A6_GTEST_FLAG_SET(throw_on_failure, false);
+  A6_GTEST_FLAG_SET(catch_exceptions, true);
+  A6_GTEST_FLAG_SET(output, std::string());
+  A6_GTEST_FLAG_SET(brief, true);
   // GoogleTest's seed (1..99999), for checks that draw their inputs at random.
-  GTEST_FLAG_SET(random_seed, static_cast<std::int32_t>(seed % 99999 + 1));
+  A6_GTEST_FLAG_SET(random_seed, static_cast<std::int32_t>(seed % 99999 + 1));
   ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
   delete listeners.Release(listeners.default_result_printer());
 }

@@ -85,6 +85,22 @@ while IFS= read -r -d '' path; do
 done < <(git -C "$repo" ls-files -z --cached --others --exclude-standard | sort -zu)
 
 # Gradescope's two files, at the root.
+# toml++ (the rubric's reader), header-only, for the images whose platform has no package of it
+# (Ubuntu 22.04, Gradescope's default): this machine's copy, with its licence. setup.sh's build
+# uses it only where the platform's package is missing (grader/cmake/rubric_report.cmake).
+toml_headers=/usr/include/toml++
+toml_licence=/usr/share/doc/libtomlplusplus-dev/copyright
+[ -f "$toml_headers/toml.h" ] && [ -f "$toml_licence" ] ||
+  die "toml++ is missing here ($toml_headers, $toml_licence): install it with scripts/install-deps.sh (libtomlplusplus-dev)"
+mkdir -p "$stage/zip/vendor/tomlplusplus/include"
+cp -r "$toml_headers" "$stage/zip/vendor/tomlplusplus/include/"
+cp "$toml_licence" "$stage/zip/vendor/tomlplusplus/LICENSE"
+{
+  echo "toml++ $(dpkg-query -W -f='${Version}' libtomlplusplus-dev 2>/dev/null || echo '(version unknown)')," \
+    "header-only, copied from $toml_headers of the machine that made this zip"
+  echo "(Debian's libtomlplusplus-dev; upstream https://github.com/marzer/tomlplusplus; MIT licence: LICENSE)"
+} >"$stage/zip/vendor/tomlplusplus/README"
+
 install -m 0755 "$repo/grader/gradescope/setup.sh" "$stage/zip/setup.sh"
 install -m 0755 "$repo/grader/gradescope/run_autograder" "$stage/zip/run_autograder"
 

@@ -1,4 +1,4 @@
-cmake_minimum_required(VERSION 3.25)
+cmake_minimum_required(VERSION 3.22)
 # Runs a physics-suite binary and checks its per-task summary (the A6-SUMMARY line):
 #   cmake -DBINARY=<path> -DFAIL=<tasks, comma-separated> -DPASS=<tasks> [-DMIN_MARGIN=10]
 #         -P check_run.cmake

@@ -2,7 +2,7 @@
 # (a6_suite: the test objects, no student code) and the grader's libraries, never a6_framework
 # or a student object: student code only ever runs in the probe.
 find_package(CLI11 REQUIRED)
-find_package(GTest 1.12 REQUIRED)
+find_package(GTest 1.11 REQUIRED)
 
 if(TARGET a6_suite)
   add_executable(a6_grade ${CMAKE_CURRENT_SOURCE_DIR}/main.cpp)

@@ -1,4 +1,4 @@
-cmake_minimum_required(VERSION 3.25)
+cmake_minimum_required(VERSION 3.22)
 # Links a probe exactly as the grader links a submission's, from BUILD/grader/probe_link.txt:
 #   cmake -DLINK_FILE=<probe_link.txt> -DPROBE=<output> -DOBJECTS=<six objects, |-separated,
 #         task order> -P link_probe.cmake

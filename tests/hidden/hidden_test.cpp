@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cloth_result.h"
+#include "gtest_flags.h"
 #include "scales.h"
 #include "suite.h"
 
@@ -35,7 +36,7 @@ constexpr std::uint64_t kSeedWithoutGrader = 20261122;
 class Draw {
  public:
   Draw() {
-    const std::int32_t flag = GTEST_FLAG_GET(random_seed);
+    const std::int32_t flag = A6_GTEST_FLAG_GET(random_seed);
     seed_ = flag != 0 ? static_cast<std::uint64_t>(flag) : kSeedWithoutGrader;
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
     const std::string name = std::string(info->test_suite_name()) + "." + info->name();
