@@ -42,6 +42,7 @@ packages=(
   libglfw3-dev       # GLFW 3.3: the viewer's window
   libimgui-dev       # Dear ImGui: the viewer's widgets
   xvfb xauth         # a virtual X server for the viewer's smoke test
+  x11vnc novnc websockify  # the desktop in the browser (scripts/desktop.sh): the viewer anywhere
   fonts-dejavu-core  # the viewer panel's font (Greek letters, ×)
   zip unzip          # the Gradescope autograder zip (scripts/gradescope-package.sh) and its test
   jq                 # JSON on the command line (scripts/instructor.sh reads results.json)
