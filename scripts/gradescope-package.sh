@@ -119,5 +119,5 @@ mv -f "$stage/package.zip" "$out"
 
 size=$(du -k "$out" | cut -f1)
 echo "gradescope-package: wrote $out ($((count + 3)) files, ${size} KiB)"
-echo "gradescope-package: upload it on Gradescope (Configure Autograder), base image Ubuntu 24.04:"
+echo "gradescope-package: upload it on Gradescope (Configure Autograder), base image Ubuntu 22.04 (the default) or 24.04:"
 echo "gradescope-package: see docs/instructor.md, \"Gradescope\""
