@@ -32,10 +32,17 @@ mkdir -p "$target/opt/a6"
 cp /etc/resolv.conf "$target/etc/resolv.conf"
 
 # Mounts for the build's sandbox and the tests (namespaces, /proc, /dev, /sys, a tmpfs /tmp).
+# The root itself is bound onto itself first: the grader's sandbox makes "/" private in its
+# mount namespace, which needs "/" to be a mount point, as it is on a real system.
+# Never run this beside another grading on the same machine: the root's /run/lock is its own, so
+# a grader inside and one outside could claim the same sandbox uid and end each other's
+# processes.
 cleanup() {
   for m in dev/pts dev proc sys tmp; do umount -l "$target/$m" 2>/dev/null; done
+  umount -l "$target" 2>/dev/null
 }
 trap cleanup EXIT
+mount --bind "$target" "$target"
 mount -t proc proc "$target/proc"
 mount --rbind /sys "$target/sys"
 mount --rbind /dev "$target/dev"
