@@ -34,11 +34,11 @@ cp /etc/resolv.conf "$target/etc/resolv.conf"
 # Mounts for the build's sandbox and the tests (namespaces, /proc, /dev, /sys, a tmpfs /tmp).
 # The root itself is bound onto itself first: the grader's sandbox makes "/" private in its
 # mount namespace, which needs "/" to be a mount point, as it is on a real system.
-# Never run this beside another grading on the same machine: the root's /run/lock is its own, so
-# a grader inside and one outside could claim the same sandbox uid and end each other's
+# The machine's /run/lock is shared with the root: graders inside and outside claim their
+# sandbox uids there (grader/process.h), so they never take the same uid and end each other's
 # processes.
 cleanup() {
-  for m in dev/pts dev proc sys tmp; do umount -l "$target/$m" 2>/dev/null; done
+  for m in run/lock dev/pts dev proc sys tmp; do umount -l "$target/$m" 2>/dev/null; done
   umount -l "$target" 2>/dev/null
 }
 trap cleanup EXIT
@@ -47,6 +47,8 @@ mount -t proc proc "$target/proc"
 mount --rbind /sys "$target/sys"
 mount --rbind /dev "$target/dev"
 mount -t tmpfs tmpfs "$target/tmp"
+mkdir -p "$target/run/lock" /run/lock
+mount --bind /run/lock "$target/run/lock"
 
 inside() { chroot "$target" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin \
   LANG=C.UTF-8 bash -c "$1"; }
