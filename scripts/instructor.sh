@@ -94,6 +94,23 @@ stale_descriptions() {
   fi
 }
 
+# grade_both OUT ARGS...: a6_grade grades solution/ and starter/ into OUT/solution and
+# OUT/starter (their output in OUT/solution.log and OUT/starter.log) with ARGS; 1, and the end
+# of its output, when it could not grade one of them.
+grade_both() {
+  local out="$1" who
+  shift
+  rm -rf "$out"
+  mkdir -p "$out"
+  for who in solution starter; do
+    if ! "$build/grader/a6_grade" "$who" --out "$out/$who" --quiet "$@" >"$out/$who.log" 2>&1; then
+      tail -5 "$out/$who.log"
+      echo "instructor: a6_grade could not grade $who/ (see $out/$who.log)"
+      return 1
+    fi
+  done
+}
+
 job_rerender() {
   local into=""
   while [ $# -gt 0 ]; do
@@ -156,17 +173,7 @@ job_hidden_check() {
   rm -f "$before" "$after"
   echo "=== 3. the solution must pass them, the starter fail them ==="
   local out="$outputs/hidden-check"
-  rm -rf "$out"
-  mkdir -p "$out"
-  local who
-  for who in solution starter; do
-    if ! "$build/grader/a6_grade" "$who" --out "$out/$who" --tests '*Hidden*' --quiet \
-      >"$out/$who.log" 2>&1; then
-      tail -5 "$out/$who.log"
-      echo "instructor: a6_grade could not grade $who/ (see $out/$who.log)"
-      return 1
-    fi
-  done
+  grade_both "$out" --tests '*Hidden*' || return 1
   if [ "$(jq '.extra_data.tests | length' "$out/solution/results.json")" -eq 0 ]; then
     echo "instructor: no hidden check ran"
     return 1
@@ -199,17 +206,8 @@ job_rubric() {
   rebuild a6_grade >/dev/null || return 1
   "$build/grader/a6_grade" --check-rubric --rubric "$rubric" || return 2
   echo "=== 2. the solution and the starter graded with it ==="
-  local out="$outputs/rubric" status=0 who
-  rm -rf "$out"
-  mkdir -p "$out"
-  for who in solution starter; do
-    if ! "$build/grader/a6_grade" "$who" --out "$out/$who" --rubric "$rubric" --quiet \
-      >"$out/$who.log" 2>&1; then
-      tail -5 "$out/$who.log"
-      echo "instructor: a6_grade could not grade $who/ with this rubric (see $out/$who.log)"
-      return 1
-    fi
-  done
+  local out="$outputs/rubric" status=0
+  grade_both "$out" --rubric "$rubric" || return 1
   sed -n '1,/^  total/p' "$out/solution.log"
   # Full marks: every item passed, and the score is the total plus every item's extra credit.
   if ! jq -e '(.tests | length > 0) and ([.tests[] | select(.status != "passed")] | length == 0)
