@@ -87,7 +87,7 @@ done < <(git -C "$repo" ls-files -z --cached --others --exclude-standard | sort 
 # Gradescope's two files, at the root.
 # toml++ (the rubric's reader), header-only, for the images whose platform has no package of it
 # (Ubuntu 22.04, Gradescope's default): this machine's copy, with its licence. setup.sh's build
-# uses it only where the platform's package is missing (grader/cmake/rubric_report.cmake).
+# uses it only where the platform's package is missing (cmake/A6Toml.cmake).
 toml_headers=/usr/include/toml++
 toml_licence=/usr/share/doc/libtomlplusplus-dev/copyright
 [ -f "$toml_headers/toml.h" ] && [ -f "$toml_licence" ] ||

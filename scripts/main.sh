@@ -13,6 +13,12 @@ cmake --preset default >/dev/null && cmake --build --preset default --target a6_
 
 build=build
 status=0
+if grep -q '^A6_GRADER_BUILT:INTERNAL=OFF$' "$build/CMakeCache.txt"; then
+  echo "main: no grader in $build/: toml++ 3 (libtomlplusplus-dev) is missing, and the main job" \
+    "grades with it. Ubuntu 22.04 has no package of it: run the main job on Ubuntu 24.04 or" \
+    "Debian 12 or 13 (README.md, \"Platforms\")." >&2
+  exit 1
+fi
 
 # grade NAME FOLDER: a6_grade FOLDER into out/NAME, its summary printed.
 grade() {
