@@ -54,7 +54,9 @@ ubuntu_keyring() {
         cp x/usr/share/keyrings/ubuntu-archive-keyring.gpg .
     ) || { say "could not fetch Ubuntu's keyring"; return 1; }
   fi
-  gpg --show-keys --with-colons "$dir/ubuntu-archive-keyring.gpg" 2>/dev/null | grep -q "^fpr:*$fpr:" ||
+  local keys
+  keys=$(gpg --show-keys --with-colons "$dir/ubuntu-archive-keyring.gpg" 2>/dev/null)
+  grep -q "^fpr:*$fpr:" <<<"$keys" ||
     { say "Ubuntu's keyring lacks the archive key $fpr"; return 1; }
   echo "$dir/ubuntu-archive-keyring.gpg"
 }

@@ -86,8 +86,11 @@ else
   # What this platform has no package of is skipped, and said (Ubuntu 22.04: toml++, which the
   # zip carries).
   available=()
+  # (apt-cache's whole answer is read first: `apt-cache ... | grep -q` under pipefail fails when
+  # grep stops reading early and apt-cache dies of SIGPIPE, as it did on Ubuntu 22.04.)
   for p in "${wanted[@]}"; do
-    if apt-cache policy "$p" 2>/dev/null | grep -q 'Candidate: [^(]'; then
+    policy=$(apt-cache policy "$p" 2>/dev/null) || policy=""
+    if [[ $policy =~ Candidate:\ [^\(] ]]; then
       available+=("$p")
     else
       say "no package $p on $os_name: skipped"
