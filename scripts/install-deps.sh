@@ -48,11 +48,15 @@ packages=(
   jq                 # JSON on the command line (scripts/instructor.sh reads results.json)
 )
 
-# Per platform: Debian 12 also gets g++-11, Ubuntu 22.04's compiler, for the Gradescope image's
-# check (scripts/compat-ubuntu2204.sh); Ubuntu 22.04 has no toml++ package (the Gradescope zip
-# carries a copy of it; a checkout's grader cannot be built there yet).
+# Per platform: Debian gets Chromium, the headless browser that checks the desktop in the
+# browser (ctest viewer_desktop_in_browser; Ubuntu's chromium is a snap, which chroots and
+# containers cannot run, so the test skips there); Debian 12 also gets g++-11, Ubuntu 22.04's
+# compiler, for the Gradescope image's check (scripts/compat-ubuntu2204.sh); Ubuntu 22.04 has no
+# toml++ package (the Gradescope zip carries a copy of it; a checkout there builds everything
+# but the grader, cmake/A6Toml.cmake).
 case "$os_id:$os_version" in
-  debian:12) packages+=(g++-11) ;;
+  debian:12) packages+=(chromium g++-11) ;;
+  debian:13) packages+=(chromium) ;;
   ubuntu:22.04)
     echo "install-deps: Ubuntu 22.04 has no libtomlplusplus-dev: skipped" >&2
     for i in "${!packages[@]}"; do [ "${packages[$i]}" = libtomlplusplus-dev ] && unset 'packages[i]'; done
