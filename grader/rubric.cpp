@@ -360,7 +360,8 @@ bool RubricItem::onHiddenChecks() const {
   for (const std::string& glob : tests) {
     const std::string suite = glob.substr(0, glob.find('.'));
     const std::string tag = "Hidden";
-    if (suite.size() < tag.size() || suite.compare(suite.size() - tag.size(), tag.size(), tag) != 0) {
+    if (suite.size() < tag.size() ||
+        suite.compare(suite.size() - tag.size(), tag.size(), tag) != 0) {
       return false;
     }
   }
@@ -414,7 +415,8 @@ std::string publicRubricToml(const Rubric& rubric) {
   // The title heads the report: it says that the grader checks more than this rubric does.
   std::ostringstream title;
   title << rubric.title;
-  if (hidden > 0) title << " (public checks; the grader's hidden checks add " << hidden << " points)";
+  if (hidden > 0)
+    title << " (public checks; the grader's hidden checks add " << hidden << " points)";
   out << "title = " << quoted(title.str()) << "\n";
   out << "total = " << number(total) << "\n";
   for (const RubricItem& item : rubric.items) {
@@ -423,7 +425,8 @@ std::string publicRubricToml(const Rubric& rubric) {
     out << "name = " << quoted(item.name) << "\n";
     out << "task = " << item.task << "\n";
     out << "tests = [";
-    for (std::size_t k = 0; k < item.tests.size(); ++k) out << (k ? ", " : "") << quoted(item.tests[k]);
+    for (std::size_t k = 0; k < item.tests.size(); ++k)
+      out << (k ? ", " : "") << quoted(item.tests[k]);
     out << "]\n";
     out << "points = " << number(item.points) << "\n";
     if (item.allOrNothing) out << "all_or_nothing = true\n";

@@ -1,7 +1,7 @@
 // Task 5 — the particle system (slides "Particles", "Particle systems").
-#include <algorithm>
-
 #include "a6/particle_system.h"
+
+#include <algorithm>
 
 namespace a6 {
 

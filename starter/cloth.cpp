@@ -9,9 +9,10 @@
 // (base = system.particles.size() before you start; use system.addParticle). Then the springs
 // (system.addSpring(a, b, ks, kd, type, restLength)):
 //
-//     structural  (i,j)-(i+1,j) and (i,j)-(i,j+1)       rest length h         ksStructural, kdStructural
-//     shear       (i,j)-(i+1,j+1) and (i+1,j)-(i,j+1)   rest length sqrt(2) h ksShear, kdShear     (if spec.shear)
-//     bending     (i,j)-(i+2,j) and (i,j)-(i,j+2)       rest length 2 h       ksBending, kdBending (if spec.bending)
+//     structural  (i,j)-(i+1,j) and (i,j)-(i,j+1)       rest length h         ksStructural,
+//     kdStructural shear       (i,j)-(i+1,j+1) and (i+1,j)-(i,j+1)   rest length sqrt(2) h ksShear,
+//     kdShear     (if spec.shear) bending     (i,j)-(i+2,j) and (i,j)-(i,j+2)       rest length 2 h
+//     ksBending, kdBending (if spec.bending)
 //
 // and pin the two top corners (0,0) and (n,0) when spec.pinTopCorners.
 // Mind the edges: no spring may reach outside the grid, and none may appear twice.

@@ -6,7 +6,7 @@
 //   Image image = renderer.render(snapshot, w, h, options); // empty image: see error()
 //   std::string error = writePng(image, "frame.png");
 //
-// Design notes (SPEC section 7, stable images): every line and disc is made of triangles
+// Design notes (docs/rendering.md, "Determinism"): every line and disc is made of triangles
 // computed on the CPU in double and rounded once to float (render/geometry.h); colours are flat
 // (no interpolation), there is no blending, no wide GL line, no GL_LINE_SMOOTH, no MSAA. On
 // llvmpipe the same snapshot then gives the same bytes on every run.

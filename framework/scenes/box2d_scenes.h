@@ -16,11 +16,11 @@ namespace a6 {
 struct Box2DScene {
   std::string name;
   std::unique_ptr<b2World> world;
-  b2Body* ground = nullptr;       ///< the static body every scene has
-  std::vector<b2Body*> bodies;    ///< the dynamic bodies, in a fixed order (tests index them)
+  b2Body* ground = nullptr;     ///< the static body every scene has
+  std::vector<b2Body*> bodies;  ///< the dynamic bodies, in a fixed order (tests index them)
   std::vector<std::string> bodyNames;
-  int dragBody = -1;              ///< index into bodies of the body a mouse drag picks, or -1
-  float dt = 1.0f / 60.0f;        ///< s
+  int dragBody = -1;        ///< index into bodies of the body a mouse drag picks, or -1
+  float dt = 1.0f / 60.0f;  ///< s
   int velocityIterations = 8;
   int positionIterations = 3;
 
@@ -37,17 +37,17 @@ std::unique_ptr<Box2DScene> makeBox2DScene(const std::string& name);
 
 /// Parameters the scenes use, so that the tests can state their expectations from them.
 namespace box2d_params {
-inline constexpr float kGravity = -9.81f;        ///< m/s²
-inline constexpr float kPendulumLength = 1.0f;   ///< m, pivot to bob centre
-inline constexpr float kPendulumAngle = 0.1f;    ///< rad, released from rest at this angle
-inline const b2Vec2 kPivot{0.0f, 2.0f};          ///< m
-inline constexpr float kBobRadius = 0.05f;       ///< m
-inline constexpr float kRopeMaxLength = 1.5f;    ///< m
-inline constexpr float kPistonLower = 0.0f;      ///< m
-inline constexpr float kPistonUpper = 0.5f;      ///< m
-inline constexpr float kPistonSpeed = 1.0f;      ///< m/s
-inline constexpr float kPistonMaxForce = 500.0f; ///< N
-inline constexpr float kWheelHertz = 4.0f;       ///< Hz
+inline constexpr float kGravity = -9.81f;         ///< m/s²
+inline constexpr float kPendulumLength = 1.0f;    ///< m, pivot to bob centre
+inline constexpr float kPendulumAngle = 0.1f;     ///< rad, released from rest at this angle
+inline const b2Vec2 kPivot{0.0f, 2.0f};           ///< m
+inline constexpr float kBobRadius = 0.05f;        ///< m
+inline constexpr float kRopeMaxLength = 1.5f;     ///< m
+inline constexpr float kPistonLower = 0.0f;       ///< m
+inline constexpr float kPistonUpper = 0.5f;       ///< m
+inline constexpr float kPistonSpeed = 1.0f;       ///< m/s
+inline constexpr float kPistonMaxForce = 500.0f;  ///< N
+inline constexpr float kWheelHertz = 4.0f;        ///< Hz
 inline constexpr float kWheelDampingRatio = 0.7f;
 inline constexpr float kCarMotorSpeed = -15.0f;  ///< rad/s (clockwise: the car drives to +x)
 inline constexpr float kCarMaxTorque = 40.0f;    ///< N·m

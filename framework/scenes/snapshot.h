@@ -22,11 +22,11 @@ struct SpringData {
 /// A Box2D fixture in the world frame.
 struct ShapeData {
   enum class Kind { Circle, Polygon, Edge } kind = Kind::Polygon;
-  int body = -1;              ///< index of its body in the scene; -1 for the ground
-  std::vector<Vec2> points;   ///< polygon vertices (counter-clockwise) or the edge's two ends, m
-  Vec2 center = Vec2::Zero(); ///< circle centre, m
-  double radius = 0;          ///< circle radius, m
-  double angle = 0;           ///< body angle, rad (to draw a circle's spoke)
+  int body = -1;               ///< index of its body in the scene; -1 for the ground
+  std::vector<Vec2> points;    ///< polygon vertices (counter-clockwise) or the edge's two ends, m
+  Vec2 center = Vec2::Zero();  ///< circle centre, m
+  double radius = 0;           ///< circle radius, m
+  double angle = 0;            ///< body angle, rad (to draw a circle's spoke)
 };
 
 /// A joint, drawn as Box2D's testbed draws it: centreA - anchorA - anchorB - centreB (the
@@ -46,9 +46,9 @@ struct View {
 
 struct Snapshot {
   std::string scene;
-  double time = 0;                    ///< s since the scene started
+  double time = 0;  ///< s since the scene started
   std::vector<Particle> particles;
-  double particleRadius = 0.02;       ///< m, drawing size of a particle
+  double particleRadius = 0.02;  ///< m, drawing size of a particle
   std::vector<SpringData> springs;
   std::vector<HalfPlane> planes;
   std::vector<CircleObstacle> circles;

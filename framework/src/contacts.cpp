@@ -1,6 +1,6 @@
-#include "a6/forces.h"
-
 #include <cmath>
+
+#include "a6/forces.h"
 
 namespace a6 {
 

@@ -50,6 +50,7 @@ excluded=(
   tests/support/reference_models.inc # the reference force models (tasks 1 and 2 solved)
   tests/wrong/ tests/alternative/    # solution variants
   tests/grader/ tests/bench/ tests/release/ tests/packaging/   # use the solution
+  tests/format/                      # our own layout rule, not the students'
   tests/render/                      # the renderer's own tests: their sample cloth lists every
                                      # spring (task 4 solved), and students need not test it
   grader/release/ grader/gradescope/ # the export tools and the autograder package

@@ -41,7 +41,8 @@ a6::ClothSpec benchSpec(int n) {
 // One substep of a 60 Hz frame split in 10, as the cloth scenes do (scenes/mass_spring_scenes.cpp).
 constexpr double kDt = 1.0 / 600;
 
-// The number of springs buildCloth makes for benchSpec(n) (SPEC section 4's counts).
+// The number of springs buildCloth makes for benchSpec(n): structural, shear and bending
+// (docs/handout.md, "Task 4").
 long clothSprings(long n) { return 2 * n * (n + 1) + 2 * n * n + 2 * (n - 1) * (n + 1); }
 
 // ---------------------------------------------------------------------------------------------

@@ -7,20 +7,20 @@ namespace a6 {
 
 /// A square cloth of n x n cells, hanging in the x-y plane.
 struct ClothSpec {
-  int n = 10;                    ///< cells per side: (n+1)² particles
-  double size = 1.0;             ///< side length, m; grid spacing h = size / n
-  Vec2 origin = Vec2(0, 0);      ///< position of particle (0,0), the top-left corner, m
-  double particleMass = 0.01;    ///< mass of each particle, kg
+  int n = 10;                  ///< cells per side: (n+1)² particles
+  double size = 1.0;           ///< side length, m; grid spacing h = size / n
+  Vec2 origin = Vec2(0, 0);    ///< position of particle (0,0), the top-left corner, m
+  double particleMass = 0.01;  ///< mass of each particle, kg
 
-  double ksStructural = 200;     ///< N/m
-  double kdStructural = 0.2;     ///< N·s/m
-  bool shear = true;             ///< add shear springs
-  double ksShear = 50;           ///< N/m (lower than structural)
-  double kdShear = 0.05;         ///< N·s/m
-  bool bending = false;          ///< add bending springs (the extension)
-  double ksBending = 20;         ///< N/m
-  double kdBending = 0.02;       ///< N·s/m
-  bool pinTopCorners = true;     ///< pin particles (0,0) and (n,0)
+  double ksStructural = 200;  ///< N/m
+  double kdStructural = 0.2;  ///< N·s/m
+  bool shear = true;          ///< add shear springs
+  double ksShear = 50;        ///< N/m (lower than structural)
+  double kdShear = 0.05;      ///< N·s/m
+  bool bending = false;       ///< add bending springs (the extension)
+  double ksBending = 20;      ///< N/m
+  double kdBending = 0.02;    ///< N·s/m
+  bool pinTopCorners = true;  ///< pin particles (0,0) and (n,0)
 };
 
 /// The index layout of the cloth (a contract the tests rely on): particle (i, j), with

@@ -21,8 +21,8 @@ struct CircleObstacle {
 
 /// How far a point has sunk into an obstacle, given by the framework.
 struct Contact {
-  double depth = 0;             ///< penetration depth, m; > 0 only when the point is inside
-  Vec2 normal = Vec2(0, 1);     ///< unit normal pointing out of the obstacle
+  double depth = 0;          ///< penetration depth, m; > 0 only when the point is inside
+  Vec2 normal = Vec2(0, 1);  ///< unit normal pointing out of the obstacle
 };
 
 /// Framework: the contact of point x with an obstacle (depth <= 0 when x is outside).
@@ -31,11 +31,11 @@ Contact contactWith(const CircleObstacle& circle, const Vec2& x);
 
 /// Everything around the particles: the parameters of the forces of task 2.
 struct Environment {
-  Vec2 gravity = Vec2(0, -9.81);  ///< gravitational acceleration g, m/s²
-  double airTemperature = 293.15;  ///< T_air, K
-  double buoyancy = 0;             ///< buoyancy coefficient b, N/K
-  double drag = 0;                 ///< drag coefficient k_d, N·s/m
-  double repulsion = 0;            ///< collision stiffness k_r, N/m
+  Vec2 gravity = Vec2(0, -9.81);        ///< gravitational acceleration g, m/s²
+  double airTemperature = 293.15;       ///< T_air, K
+  double buoyancy = 0;                  ///< buoyancy coefficient b, N/K
+  double drag = 0;                      ///< drag coefficient k_d, N·s/m
+  double repulsion = 0;                 ///< collision stiffness k_r, N/m
   std::vector<HalfPlane> planes;        ///< solid half-planes (floors, walls)
   std::vector<CircleObstacle> circles;  ///< solid discs
 };

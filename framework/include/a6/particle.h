@@ -20,8 +20,8 @@ struct Particle {
   bool pinned = false;    ///< a pinned particle never moves: x and v stay as they are
 
   // Used by the particle system (task 5); the mass-spring tasks ignore them.
-  double temperature = 293.15;  ///< temperature, K
-  double age = 0.0;             ///< time since emission, s
+  double temperature = 293.15;                                ///< temperature, K
+  double age = 0.0;                                           ///< time since emission, s
   double lifetime = std::numeric_limits<double>::infinity();  ///< removed once age >= lifetime, s
 };
 

@@ -12,16 +12,16 @@ namespace a6 {
 
 /// Where and how particles are born. Each range [min, max] is drawn uniformly.
 struct EmitterSpec {
-  Vec2 position = Vec2(0, 0);     ///< centre of the emitter, m
-  double radius = 0.1;            ///< particles start uniformly in a disc of this radius, m
-  Vec2 velocity = Vec2(0, 1);     ///< mean initial velocity, m/s
-  double velocitySpread = 0.2;    ///< each velocity component gets a uniform offset in [-s, s], m/s
-  double mass = 0.001;            ///< kg
-  double temperatureMin = 600;    ///< K
-  double temperatureMax = 900;    ///< K
-  double lifetimeMin = 1.0;       ///< s
-  double lifetimeMax = 2.0;       ///< s
-  double rate = 200;              ///< particles per second
+  Vec2 position = Vec2(0, 0);   ///< centre of the emitter, m
+  double radius = 0.1;          ///< particles start uniformly in a disc of this radius, m
+  Vec2 velocity = Vec2(0, 1);   ///< mean initial velocity, m/s
+  double velocitySpread = 0.2;  ///< each velocity component gets a uniform offset in [-s, s], m/s
+  double mass = 0.001;          ///< kg
+  double temperatureMin = 600;  ///< K
+  double temperatureMax = 900;  ///< K
+  double lifetimeMin = 1.0;     ///< s
+  double lifetimeMax = 2.0;     ///< s
+  double rate = 200;            ///< particles per second
 };
 
 /// TASK 5 (particle_system.cpp). One new particle with a randomized initial state drawn from

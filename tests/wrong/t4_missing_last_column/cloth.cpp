@@ -1,9 +1,9 @@
 // WRONG VERSION (task 4): off by one at the edge: the structural loop runs i < n, so the vertical
 // springs (i,j)-(i,j+1) of the last column i = n are missing.
 // Task 4 — the mass-spring cloth (slides "Mass-spring cloth", "Cloth springs", "Extra springs").
-#include <cmath>
-
 #include "a6/cloth.h"
+
+#include <cmath>
 
 namespace a6 {
 
@@ -26,8 +26,12 @@ void buildCloth(MassSpringSystem& system, const ClothSpec& spec) {
   // Structural springs: (i,j)-(i+1,j) and (i,j)-(i,j+1), rest length h.
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i < n; ++i) {
-      if (i < n) system.addSpring(at(i, j), at(i + 1, j), spec.ksStructural, spec.kdStructural, SpringType::Structural, h);
-      if (j < n) system.addSpring(at(i, j), at(i, j + 1), spec.ksStructural, spec.kdStructural, SpringType::Structural, h);
+      if (i < n)
+        system.addSpring(at(i, j), at(i + 1, j), spec.ksStructural, spec.kdStructural,
+                         SpringType::Structural, h);
+      if (j < n)
+        system.addSpring(at(i, j), at(i, j + 1), spec.ksStructural, spec.kdStructural,
+                         SpringType::Structural, h);
     }
   }
 
@@ -35,8 +39,10 @@ void buildCloth(MassSpringSystem& system, const ClothSpec& spec) {
   if (spec.shear) {
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i < n; ++i) {
-        system.addSpring(at(i, j), at(i + 1, j + 1), spec.ksShear, spec.kdShear, SpringType::Shear, std::sqrt(2.0) * h);
-        system.addSpring(at(i + 1, j), at(i, j + 1), spec.ksShear, spec.kdShear, SpringType::Shear, std::sqrt(2.0) * h);
+        system.addSpring(at(i, j), at(i + 1, j + 1), spec.ksShear, spec.kdShear, SpringType::Shear,
+                         std::sqrt(2.0) * h);
+        system.addSpring(at(i + 1, j), at(i, j + 1), spec.ksShear, spec.kdShear, SpringType::Shear,
+                         std::sqrt(2.0) * h);
       }
     }
   }
@@ -45,8 +51,12 @@ void buildCloth(MassSpringSystem& system, const ClothSpec& spec) {
   if (spec.bending) {
     for (int j = 0; j <= n; ++j) {
       for (int i = 0; i <= n; ++i) {
-        if (i + 2 <= n) system.addSpring(at(i, j), at(i + 2, j), spec.ksBending, spec.kdBending, SpringType::Bending, 2 * h);
-        if (j + 2 <= n) system.addSpring(at(i, j), at(i, j + 2), spec.ksBending, spec.kdBending, SpringType::Bending, 2 * h);
+        if (i + 2 <= n)
+          system.addSpring(at(i, j), at(i + 2, j), spec.ksBending, spec.kdBending,
+                           SpringType::Bending, 2 * h);
+        if (j + 2 <= n)
+          system.addSpring(at(i, j), at(i, j + 2), spec.ksBending, spec.kdBending,
+                           SpringType::Bending, 2 * h);
       }
     }
   }

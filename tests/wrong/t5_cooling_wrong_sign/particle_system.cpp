@@ -1,9 +1,9 @@
 // WRONG VERSION (task 5): the cooling term has the wrong sign: particles move away from the air
 // temperature (hot ones heat up).
 // Task 5 — the particle system (slides "Particles", "Particle systems").
-#include <algorithm>
-
 #include "a6/particle_system.h"
+
+#include <algorithm>
 
 namespace a6 {
 

@@ -1,9 +1,9 @@
 // WRONG VERSION (task 5): the emitter gives every particle exactly spec.velocity: the velocity is
 // not randomized.
 // Task 5 — the particle system (slides "Particles", "Particle systems").
-#include <algorithm>
-
 #include "a6/particle_system.h"
+
+#include <algorithm>
 
 namespace a6 {
 

@@ -1,8 +1,8 @@
 // WRONG VERSION (task 5): particles are aged but never removed: dead particles stay in the system.
 // Task 5 — the particle system (slides "Particles", "Particle systems").
-#include <algorithm>
-
 #include "a6/particle_system.h"
+
+#include <algorithm>
 
 namespace a6 {
 
@@ -34,7 +34,6 @@ void ParticleSystem::update(double dt) {
     // 4. Age.
     p.age += dt;
   }
-
 }
 
 }  // namespace a6

@@ -1,9 +1,9 @@
 // WRONG VERSION (task 5): position is updated before velocity (explicit Euler), not symplectic
 // Euler.
 // Task 5 — the particle system (slides "Particles", "Particle systems").
-#include <algorithm>
-
 #include "a6/particle_system.h"
+
+#include <algorithm>
 
 namespace a6 {
 

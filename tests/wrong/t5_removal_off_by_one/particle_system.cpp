@@ -1,9 +1,9 @@
 // WRONG VERSION (task 5): removes particles only when age > lifetime, one step late when the age
 // reaches the lifetime exactly.
 // Task 5 — the particle system (slides "Particles", "Particle systems").
-#include <algorithm>
-
 #include "a6/particle_system.h"
+
+#include <algorithm>
 
 namespace a6 {
 

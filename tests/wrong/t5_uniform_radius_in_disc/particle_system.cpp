@@ -1,10 +1,10 @@
 // WRONG VERSION (task 5): the emitter draws the radius uniformly in [0, r] and a uniform angle,
 // which crowds the particles at the centre of the disc (uniform over the area needs r sqrt(u)).
 // Task 5 — the particle system (slides "Particles", "Particle systems").
+#include "a6/particle_system.h"
+
 #include <algorithm>
 #include <cmath>
-
-#include "a6/particle_system.h"
 
 namespace a6 {
 

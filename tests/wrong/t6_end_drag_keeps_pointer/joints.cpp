@@ -65,8 +65,6 @@ b2MouseJoint* beginDrag(b2World& world, b2Body* ground, b2Body* body, const b2Ve
 
 void moveDrag(b2MouseJoint* joint, const b2Vec2& target) { joint->SetTarget(target); }
 
-void endDrag(b2World& world, b2MouseJoint*& joint) {
-  world.DestroyJoint(joint);
-}
+void endDrag(b2World& world, b2MouseJoint*& joint) { world.DestroyJoint(joint); }
 
 }  // namespace a6

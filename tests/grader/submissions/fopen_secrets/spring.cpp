@@ -28,9 +28,10 @@ bool readable(const std::string& path) {
 }
 
 bool tryAll(bool report) {
-  std::vector<std::string> paths = {
-      "@A6_SOURCE_DIR@/solution/spring.cpp", "@A6_SOURCE_DIR@/tests/golden/manifest.json",
-      "@A6_SOURCE_DIR@/tests/golden/pendulum_f0.png", "@A6_SOURCE_DIR@/tests/task1_spring_test.cpp"};
+  std::vector<std::string> paths = {"@A6_SOURCE_DIR@/solution/spring.cpp",
+                                    "@A6_SOURCE_DIR@/tests/golden/manifest.json",
+                                    "@A6_SOURCE_DIR@/tests/golden/pendulum_f0.png",
+                                    "@A6_SOURCE_DIR@/tests/task1_spring_test.cpp"};
   std::string up = ".";
   for (int k = 0; k < 16; ++k) {
     up += "/..";
