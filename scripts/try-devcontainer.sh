@@ -16,7 +16,8 @@
 # A6_DEVCONTAINER_HOST_NETWORK=1 puts the container on the host's network (a Docker daemon
 # without a bridge, as on the project's build machine): port 6080 is then the host's, and the
 # container reaches the package archive through the host; otherwise port 6080 is published.
-# The workspace is /var/tmp/a6-devcontainer-ws (new each run); the logs are beside it.
+# The workspace is /var/tmp/a6-devcontainer-ws (new each run); the logs are beside it. The
+# container is removed at the end (A6_DEVCONTAINER_KEEP=1 keeps it).
 set -uo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
 ws=/var/tmp/a6-devcontainer-ws
@@ -42,6 +43,14 @@ else
   run_args='"runArgs": ["-p", "6080:6080"],'
 fi
 sed "s|^  \"image\": |  $run_args\n  \"image\": |" "$ws/.devcontainer/devcontainer.json" >"$config"
+
+# The container is removed at the end (its desktop and viewer would keep a core busy), unless
+# A6_DEVCONTAINER_KEEP=1.
+remove_container() {
+  [ "${A6_DEVCONTAINER_KEEP:-0}" = 1 ] ||
+    docker ps -aq --filter "label=devcontainer.local_folder=$ws" | xargs -r docker rm -f >/dev/null
+}
+trap remove_container EXIT
 
 start=$(date +%s.%N)
 since() { echo "$(date +%s.%N) - $start" | bc | cut -d. -f1; }

@@ -87,7 +87,8 @@ cp /etc/resolv.conf "$target/etc/resolv.conf"
 # The root itself is bound onto itself first: the grader's sandbox makes "/" private in its
 # mount namespace, which needs "/" to be a mount point, as it is on a real system.
 # The machine's /run/lock is shared with the root: graders inside and outside claim their
-# sandbox uids there (grader/process.h), so they never take the same uid and end each other's
+# sandbox uids there (grader/sandbox/process.h), so they never take the same uid and end each
+# other's
 # processes.
 cleanup() {
   for m in run/lock dev/pts dev proc sys tmp; do umount -l "$target/$m" 2>/dev/null; done

@@ -130,9 +130,9 @@ Result guarded(Body&& body) {
   try {
     body(result);
   } catch (const std::exception& e) {
-    result.error = std::string("exception: ") + e.what();
+    result.fail(Fault::Exception, std::string("exception: ") + e.what());
   } catch (...) {
-    result.error = "exception of unknown type";
+    result.fail(Fault::Exception, "exception of unknown type");
   }
   return result;
 }
@@ -233,7 +233,7 @@ class InProcess final : public StudentCode {
     return guarded<Box2DResult>([&](Box2DResult& result) {
       std::unique_ptr<Box2DScene> scene = makeBox2DScene(request.scene);
       if (!scene) {
-        result.error = "unknown Box2D scene '" + request.scene + "'";
+        result.fail(Fault::Refused, "unknown Box2D scene '" + request.scene + "'");
         return;
       }
       const float invDt = 1.0f / scene->dt;
@@ -284,15 +284,15 @@ class InProcess final : public StudentCode {
       int last = 0;
       for (int frame : request.frames) {
         if (frame < 0 || frame > kMaxFrames) {
-          result.error = "runScene: frame " + std::to_string(frame) + " is outside [0, " +
-                         std::to_string(kMaxFrames) + "]";
+          result.fail(Fault::Refused, "runScene: frame " + std::to_string(frame) +
+                                          " is outside [0, " + std::to_string(kMaxFrames) + "]");
           return;
         }
         last = std::max(last, frame);
       }
       std::unique_ptr<Scene> scene = makeScene(request.scene);
       if (!scene) {
-        result.error = "unknown scene '" + request.scene + "'";
+        result.fail(Fault::Refused, "unknown scene '" + request.scene + "'");
         return;
       }
       if (!request.useDefaults) scene->reset(request.params);

@@ -23,11 +23,36 @@ namespace a6::harness {
 
 using a6::SpringData;  // particle indices instead of pointers (scenes/snapshot.h)
 
-/// Every result carries an error: empty when the student code ran to the end, otherwise what
-/// went wrong (an exception's message, a crash or a timeout in the grader's probe).
+/// Why a request did not run to the end. Decisions (scoring, retries, the report) read this
+/// value, never the wording of `error`, which is for people.
+enum class Fault : unsigned char {
+  None,          ///< it ran to the end
+  Exception,     ///< the student's code threw
+  Refused,       ///< the request was invalid (an unknown scene, a frame out of range): no
+                 ///< student code ran
+  Crashed,       ///< the grader's probe died, or closed its answer pipe, on this request
+  TimedOut,      ///< the request's time limit ran out, and the probe was stopped
+  Garbage,       ///< the probe's answer could not be read
+  BadStart,      ///< the probe started but failed the start-up check (threads, no filter)
+  StartFailed,   ///< the sandbox could not start the probe (a grader problem)
+  StartsUsedUp,  ///< the probe was started as often as this check allows: not sent
+  NotRun,        ///< not sent: the check's time limit or all checks' time budget was spent
+  Unavailable,   ///< not sent: there is no probe (the build failed; `error` says why)
+  GraderError,   ///< the grader itself failed on this request
+};
+
+/// Every result carries an outcome: no fault and an empty error when the student code ran to
+/// the end, otherwise the fault and, in `error`, what went wrong in words (an exception's
+/// message, a crash or a timeout in the grader's probe).
 struct Outcome {
+  Fault fault = Fault::None;
   std::string error;
-  bool ok() const { return error.empty(); }
+  bool ok() const { return fault == Fault::None && error.empty(); }
+  /// Sets the fault and its words.
+  void fail(Fault why, std::string words) {
+    fault = why;
+    error = std::move(words);
+  }
 };
 
 // Task 1 ---------------------------------------------------------------------------------------
@@ -201,7 +226,8 @@ class StudentCode {
   /// function in a6_framework: the grader implements it without linking student code.
   virtual SceneResult runScene(const SceneRequest& request) {
     SceneResult result;
-    result.error = "runScene('" + request.scene + "') is not supported by this implementation";
+    result.fail(Fault::Refused,
+                "runScene('" + request.scene + "') is not supported by this implementation");
     return result;
   }
 };

@@ -567,11 +567,37 @@ json encJoints(const std::vector<harness::JointInfo>& js) {
 
 json request(const char* kind, json body) { return {{"kind", kind}, {"body", std::move(body)}}; }
 
-// A result's "error", and whether the rest may be absent (an error alone is a whole result).
+// The faults a probe may report: what its own code saw. The others are the grader's findings
+// about the probe (a crash, a time-out, garbage), which a probe must not claim.
+const char* faultName(harness::Fault fault) {
+  switch (fault) {
+    case harness::Fault::None:
+      return "none";
+    case harness::Fault::Exception:
+      return "exception";
+    case harness::Fault::Refused:
+      return "refused";
+    default:
+      return "exception";  // never sent: only the grader finds the others
+  }
+}
+harness::Fault probeFault(const std::string& name) {
+  if (name == "none") return harness::Fault::None;
+  if (name == "exception") return harness::Fault::Exception;
+  if (name == "refused") return harness::Fault::Refused;
+  throw Malformed("\"" + name.substr(0, 40) + "\" is not a fault a probe may report");
+}
+
+// A result's "error" and "fault", and whether the rest may be absent (an error alone is a
+// whole result). An error without a fault is an exception's; a fault without words gets some.
 template <typename Result>
 bool startResult(const json& j, Result& r) {
   r.error = getString(j, "error");
-  return !r.error.empty() && j.size() == 1;
+  const bool hasFault = j.is_object() && j.contains("fault");
+  r.fault = hasFault ? probeFault(getString(j, "fault")) : harness::Fault::None;
+  if (r.fault == harness::Fault::None && !r.error.empty()) r.fault = harness::Fault::Exception;
+  if (r.fault != harness::Fault::None && r.error.empty()) r.error = "failed (no message)";
+  return r.fault != harness::Fault::None && j.size() == (hasFault ? 2u : 1u);
 }
 
 // Runs a decoder, naming the result type in its error.
@@ -763,7 +789,7 @@ harness::SceneRequest decodeRunSceneRequest(const json& j) {
 // ------------------------------------------------------------------------------------------
 
 json encodeResult(const harness::SpringForceResult& r) {
-  return {{"error", r.error}, {"force", vec(r.force)}};
+  return {{"error", r.error}, {"fault", faultName(r.fault)}, {"force", vec(r.force)}};
 }
 harness::SpringForceResult decodeSpringForce(const json& j) {
   return decodeAs("SpringForceResult", [&] {
@@ -775,8 +801,10 @@ harness::SpringForceResult decodeSpringForce(const json& j) {
 }
 
 json encodeResult(const harness::ForcesResult& r) {
-  return {{"error", r.error},    {"gravity", vec(r.gravity)},     {"buoyancy", vec(r.buoyancy)},
-          {"drag", vec(r.drag)}, {"repulsion", vec(r.repulsion)}, {"total", vec(r.total)}};
+  return {{"error", r.error},          {"fault", faultName(r.fault)},
+          {"gravity", vec(r.gravity)}, {"buoyancy", vec(r.buoyancy)},
+          {"drag", vec(r.drag)},       {"repulsion", vec(r.repulsion)},
+          {"total", vec(r.total)}};
 }
 harness::ForcesResult decodeForces(const json& j) {
   return decodeAs("ForcesResult", [&] {
@@ -794,6 +822,7 @@ harness::ForcesResult decodeForces(const json& j) {
 json encodeResult(const harness::SimulateResult& r) {
   return {
       {"error", r.error},
+      {"fault", faultName(r.fault)},
       {"recordedFrames", ints(r.recordedFrames)},
       {"states", list(r.states, [](const std::vector<Particle>& s) { return encParticles(s); })}};
 }
@@ -809,6 +838,7 @@ harness::SimulateResult decodeSimulate(const json& j) {
 
 json encodeResult(const harness::ClothResult& r) {
   return {{"error", r.error},
+          {"fault", faultName(r.fault)},
           {"particles", encParticles(r.particles)},
           {"springs", encSprings(r.springs)}};
 }
@@ -823,7 +853,10 @@ harness::ClothResult decodeBuildCloth(const json& j) {
 }
 
 json encodeResult(const harness::ParticlesResult& r) {
-  return {{"error", r.error}, {"particles", encParticles(r.particles)}, {"counts", ints(r.counts)}};
+  return {{"error", r.error},
+          {"fault", faultName(r.fault)},
+          {"particles", encParticles(r.particles)},
+          {"counts", ints(r.counts)}};
 }
 harness::ParticlesResult decodeParticles(const json& j) {
   return decodeAs("ParticlesResult", [&] {
@@ -837,6 +870,7 @@ harness::ParticlesResult decodeParticles(const json& j) {
 
 json encodeResult(const harness::Box2DResult& r) {
   return {{"error", r.error},
+          {"fault", faultName(r.fault)},
           {"bodies", list(r.bodies, [](const harness::BodyInfo& b) { return enc(b); })},
           {"poses", list(r.poses,
                          [](const std::vector<harness::BodyPose>& step) {
@@ -865,6 +899,7 @@ harness::Box2DResult decodeRunBox2D(const json& j) {
 
 json encodeResult(const harness::SceneResult& r) {
   return {{"error", r.error},
+          {"fault", faultName(r.fault)},
           {"snapshots", list(r.snapshots, [](const Snapshot& s) { return enc(s); })}};
 }
 harness::SceneResult decodeRunScene(const json& j) {
@@ -895,14 +930,16 @@ json serve(harness::StudentCode& code, const json& message) {
     }
     if (kind == "runBox2D") return encodeResult(code.runBox2D(decodeRunBox2DRequest(body)));
     if (kind == "runScene") return encodeResult(code.runScene(decodeRunSceneRequest(body)));
-    return {{"error", "the probe does not know the request kind '" + kind + "'"}};
+    return {{"error", "the probe does not know the request kind '" + kind + "'"},
+            {"fault", "refused"}};
   } catch (const Malformed& e) {
     return {
-        {"error", "malformed request" + (kind.empty() ? "" : " '" + kind + "'") + ": " + e.what()}};
+        {"error", "malformed request" + (kind.empty() ? "" : " '" + kind + "'") + ": " + e.what()},
+        {"fault", "refused"}};
   } catch (const std::exception& e) {
-    return {{"error", std::string("exception: ") + e.what()}};
+    return {{"error", std::string("exception: ") + e.what()}, {"fault", "exception"}};
   } catch (...) {
-    return {{"error", "exception of unknown type"}};
+    return {{"error", "exception of unknown type"}, {"fault", "exception"}};
   }
 }
 

@@ -10,7 +10,7 @@
 //                  grader); a submission that tries to read another; bad command lines.
 //
 // Each Batch case is its own ctest entry (grader_batch_<case>), so they run in parallel.
-#include "batch.h"
+#include "batch/batch.h"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -31,9 +31,9 @@
 #include <thread>
 #include <vector>
 
-#include "report.h"
-#include "rubric.h"
+#include "report/report.h"
 #include "run_command.h"
+#include "scoring/rubric.h"
 #include "staging.h"
 
 namespace {

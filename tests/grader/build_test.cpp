@@ -1,6 +1,6 @@
-// Building a submission's probe (grader/build.*): each file alone, in the sandbox, against the
-// kit; a broken, missing, hostile or slow file costs its own task only.
-#include "build.h"
+// Building a submission's probe (grader/build/build.*): each file alone, in the sandbox, against
+// the kit; a broken, missing, hostile or slow file costs its own task only.
+#include "build/build.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -13,7 +13,7 @@
 #include <iostream>
 #include <string>
 
-#include "intake.h"
+#include "intake/intake.h"
 #include "sandbox_user.h"
 
 namespace fs = std::filesystem;

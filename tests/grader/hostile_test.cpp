@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "poisoner.h"
-#include "rubric.h"
+#include "scoring/rubric.h"
 #include "staging.h"
 
 namespace {

@@ -1,6 +1,6 @@
-// Taking a submission in (grader/intake.*): folders, zips, tarballs, Gradescope's flat layout,
-// and hostile archives. Archives are written here, at run time, with libarchive's writer.
-#include "intake.h"
+// Taking a submission in (grader/intake/intake.*): folders, zips, tarballs, Gradescope's flat
+// layout, and hostile archives. Archives are written here, at run time, with libarchive's writer.
+#include "intake/intake.h"
 
 #include <archive.h>
 #include <archive_entry.h>

@@ -1,6 +1,6 @@
 // The physics suite run as the grader runs it: in this process, with a6::test::student() a
-// ProbeClient that sends every request to a sandboxed probe (grader/probe_client.h). No student
-// code is linked into this binary.
+// ProbeClient that sends every request to a sandboxed probe (grader/probe/probe_client.h). No
+// student code is linked into this binary.
 //   a6_suite_via_probe --probe PATH [GoogleTest flags]     (or A6_PROBE=PATH in the environment)
 // At the end it prints the per-task summary (tests/support/summary.h) and how many probes it
 // started, so tests/check_run.cmake can check it like the in-process binaries.
@@ -15,7 +15,7 @@
 #include <memory>
 #include <string>
 
-#include "probe_client.h"
+#include "probe/probe_client.h"
 #include "sandbox_user.h"
 #include "suite.h"
 #include "summary.h"

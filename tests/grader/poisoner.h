@@ -1,5 +1,5 @@
-// What poisoned the next grading before the process layer (grader/process.h): a process of the
-// sandbox's user in a session of its own, named with a newline (which a line-by-line reader of
+// What poisoned the next grading before the process layer (grader/sandbox/process.h): a process of
+// the sandbox's user in a session of its own, named with a newline (which a line-by-line reader of
 // /proc/PID/stat skips), with a child of the same kind, sending SIGKILL to every process of its
 // user in a loop. Started as root; the caller reaps the pid it returns.
 #pragma once

@@ -1,7 +1,7 @@
-// The ProbeClient (grader/probe_client.h) against real probes: the solution's (answers bit for bit
-// as in-process code does) and a hostile one (fixtures/probe_hostile/spring.cpp: crashes, loops,
-// NaN, system calls, garbage on the answer pipe). A failure costs only its own request.
-#include "probe_client.h"
+// The ProbeClient (grader/probe/probe_client.h) against real probes: the solution's (answers bit
+// for bit as in-process code does) and a hostile one (fixtures/probe_hostile/spring.cpp: crashes,
+// loops, NaN, system calls, garbage on the answer pipe). A failure costs only its own request.
+#include "probe/probe_client.h"
 
 #include <gtest/gtest.h>
 #include <sched.h>

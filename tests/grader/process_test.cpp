@@ -1,7 +1,7 @@
-// The process layer (grader/process.h) alone: waiting for one child, ending strays without
+// The process layer (grader/sandbox/process.h) alone: waiting for one child, ending strays without
 // reaping what is kept, ending every process of a sandbox user whatever it is named, and claiming
 // a user per grading.
-#include "process.h"
+#include "sandbox/process.h"
 
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -1,6 +1,6 @@
 // Scoring arithmetic and the three reports: results.json in Gradescope's format (written
 // atomically), the HTML report (self-contained, student text escaped), the terminal summary.
-#include "report.h"
+#include "report/report.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -1,7 +1,7 @@
-// The sandbox (grader/sandbox.h), against a program that misbehaves on request
+// The sandbox (grader/sandbox/sandbox.h), against a program that misbehaves on request
 // (fixtures/sandbox_tool.cpp): every limit holds, the parent never hangs, and what the child
 // sees (environment, cwd, fds, files, network, user) is what the sandbox promises.
-#include "sandbox.h"
+#include "sandbox/sandbox.h"
 
 #include <arpa/inet.h>
 #include <fcntl.h>

@@ -1,4 +1,4 @@
-// A sandbox user of this test process's own (grader/process.h), for the tests that run
+// A sandbox user of this test process's own (grader/sandbox/process.h), for the tests that run
 // sandboxes directly: tests that run side by side (ctest -j) never share a user, and so never
 // share its process limit. Not root: the sandbox changes no user, and this returns nobody's uid.
 #pragma once
@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "process.h"
+#include "sandbox/process.h"
 
 namespace a6::test {
 

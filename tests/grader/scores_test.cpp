@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "rubric.h"
+#include "scoring/rubric.h"
 #include "staging.h"
 
 namespace {

@@ -8,7 +8,7 @@
 # Exit code: 0 pass, 1 fail, 77 skipped (Xvfb, x11vnc, noVNC/websockify or Chromium missing).
 set -uo pipefail
 root="$1" viewer="$2" checker="$3" out="$4"
-for c in Xvfb x11vnc websockify chromium; do
+for c in Xvfb x11vnc websockify chromium python3; do
   command -v "$c" >/dev/null || { echo "SKIP: $c is not installed (scripts/install-deps.sh)"; exit 77; }
 done
 [ -d /usr/share/novnc ] || { echo "SKIP: noVNC is not installed (scripts/install-deps.sh)"; exit 77; }
@@ -24,6 +24,7 @@ port=$((16000 + ${display#:}))
 export A6_DESKTOP_DISPLAY="$display" A6_DESKTOP_PORT="$port" A6_DESKTOP_STATE="$out/desktop"
 cleanup() {
   [ -n "${viewer_pid:-}" ] && kill "$viewer_pid" 2>/dev/null
+  [ -n "${hold_pid:-}" ] && kill "$hold_pid" 2>/dev/null
   bash "$root/scripts/desktop.sh" stop >/dev/null
 }
 trap cleanup EXIT
@@ -35,14 +36,21 @@ viewer_pid=$!
 # The viewer's window is up when xwininfo... (not installed everywhere): give it a few seconds.
 sleep 3
 kill -0 "$viewer_pid" 2>/dev/null || { cat "$out/viewer.log"; echo "FAIL: the viewer exited"; exit 1; }
-# Chromium's virtual time does not wait for the VNC connection: the page may still say
-# "Connecting...". So the page is shot again until the check passes, up to 8 times (a failed
-# check is printed each time).
+# Chromium's virtual time does not wait for the VNC connection, only for pending requests: the
+# noVNC page is shown in a frame of a page that holds one request for 4 s of real time
+# (hold_page.py), so that noVNC connects and draws before the shot. Should it still say
+# "Connecting...", the page is shot again until the check passes, up to 8 times (a failed check
+# is printed each time).
+hold_port=$((port + 1000))
+python3 "$(dirname "$0")/hold_page.py" "$hold_port" \
+  "http://localhost:$port/vnc.html?autoconnect=true&quality=9" 4 >"$out/hold.log" 2>&1 &
+hold_pid=$!
+for _ in $(seq 100); do (exec 3<>"/dev/tcp/127.0.0.1/$hold_port") 2>/dev/null && break; sleep 0.1; done
 for attempt in 1 2 3 4 5 6 7 8; do
   rm -f "$out/browser.png"
   timeout 90 chromium --headless --no-sandbox --disable-gpu --window-size=1280,800 \
     --virtual-time-budget=15000 --screenshot="$out/browser.png" \
-    "http://localhost:$port/vnc.html?autoconnect=true&quality=9" >"$out/chromium.log" 2>&1
+    "http://127.0.0.1:$hold_port/" >"$out/chromium.log" 2>&1
   [ -s "$out/browser.png" ] || { tail -5 "$out/chromium.log"; echo "FAIL: Chromium wrote no screenshot"; exit 1; }
   # The window sits at the display's top-left corner (no window manager): the scene area is its
   # first 800x600 pixels, the panel right of it.

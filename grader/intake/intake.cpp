@@ -15,7 +15,7 @@
 //
 // Zip bombs: an entry's data is read only for task files (at most maxFileBytes each) and an
 // archive stops being read after maxEntries entries or maxTotalBytes of decompressed data.
-#include "intake.h"
+#include "intake/intake.h"
 
 #include <archive.h>
 #include <archive_entry.h>

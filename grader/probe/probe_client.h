@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "harness/student_code.h"
-#include "sandbox.h"
+#include "sandbox/sandbox.h"
 
 namespace a6::grader {
 
@@ -35,6 +35,18 @@ inline double forceWaitAllowance(std::size_t answers, double limit) {
 
 /// What the student's code did to the probes, for a TA's "to look at" list (a6_batch): each
 /// counts once per probe stopped for it.
+/// The words of a failed request, as students read them. With A6_REWORD_MESSAGES=1 in the
+/// grader's environment every such message is prefixed "[reworded] ": the test that proves no
+/// decision (a score, a retry, a start-up verdict) reads the words, only Outcome::fault, grades
+/// with and without it and compares.
+std::string reworded(std::string words);
+
+/// What a probe sees (an allow-list, sandbox/sandbox.h): the system's libraries, /proc, the
+/// devices null, zero and urandom, and its own program and work folder; nothing else of the
+/// machine: not the grader's trees (`secrets`, named first where nothing can be hidden), not the
+/// rest of the work folder (the rendered images), not /tmp or any folder others may write to.
+SandboxView probeView(const std::vector<std::filesystem::path>& secrets);
+
 struct ProbeIncidents {
   int crashes = 0;        ///< killed by a signal (SIGSEGV, SIGABRT, SIGXCPU...) or exited
   int timeouts = 0;       ///< stopped at a request's time limit

@@ -1,5 +1,5 @@
 // The out-of-process StudentCode (see probe_client.h).
-#include "probe_client.h"
+#include "probe/probe_client.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <functional>
@@ -23,7 +24,7 @@
 
 #include "harness/force_channel.h"
 #include "harness/wire.h"
-#include "process.h"
+#include "sandbox/process.h"
 
 namespace a6::grader {
 
@@ -32,6 +33,15 @@ using Clock = std::chrono::steady_clock;
 using nlohmann::json;
 
 namespace {
+
+using harness::Fault;
+using harness::Outcome;
+
+Outcome failure(Fault fault, std::string words) {
+  Outcome o;
+  o.fail(fault, reworded(std::move(words)));
+  return o;
+}
 
 constexpr int kProbeRequestFd = 3;  // the probe reads requests here
 constexpr int kProbeAnswerFd = 4;   // and answers here
@@ -296,23 +306,26 @@ struct ProbeClient::Impl {
     return exit;
   }
 
-  // Starts a probe when none runs; returns an error, or "".
-  std::string ensureStarted() {
-    if (process) return "";
+  // Starts a probe when none runs; returns why not (a fault), or no fault.
+  Outcome ensureStarted() {
+    if (process) return {};
     if (starts >= maxStarts) {
-      return "the probe was started " + std::to_string(starts) +
-             " times (it crashed or ran out of time each time); the remaining requests were not "
-             "run";
+      return failure(Fault::StartsUsedUp,
+                     "the probe was started " + std::to_string(starts) +
+                         " times (it crashed or ran out of time each time); the remaining "
+                         "requests were not run");
     }
     ++starts;
     std::error_code ec;
     fs::create_directories(workRoot, ec);
     int request[2], answer[2];
-    if (pipe2(request, O_CLOEXEC) != 0) return std::string("pipe: ") + std::strerror(errno);
+    if (pipe2(request, O_CLOEXEC) != 0) {
+      return failure(Fault::StartFailed, std::string("pipe: ") + std::strerror(errno));
+    }
     if (pipe2(answer, O_CLOEXEC) != 0) {
       ::close(request[0]);
       ::close(request[1]);
-      return std::string("pipe: ") + std::strerror(errno);
+      return failure(Fault::StartFailed, std::string("pipe: ") + std::strerror(errno));
     }
     SandboxSpec spec;
     spec.argv = {fs::absolute(probe).string()};
@@ -329,7 +342,7 @@ struct ProbeClient::Impl {
         ::close(request[1]);
         ::close(answer[0]);
         ::close(answer[1]);
-        return error;
+        return failure(Fault::StartFailed, error);
       }
       for (const auto& fds : forceServer->probeFds()) spec.mapFds.push_back(fds);
     }
@@ -352,13 +365,13 @@ struct ProbeClient::Impl {
       process.reset();
       forceServer.reset();
       ++incidents.startFailures;
-      return "could not start the probe: " + error;
+      return failure(Fault::StartFailed, "could not start the probe: " + error);
     }
     toProbe = request[1];
     fromProbe = answer[0];
     fcntl(toProbe, F_SETFL, fcntl(toProbe, F_GETFL) | O_NONBLOCK);
     fcntl(fromProbe, F_SETFL, fcntl(fromProbe, F_GETFL) | O_NONBLOCK);
-    return "";
+    return {};
   }
 
   // The probe's answer pipe must be silent between requests; anything there means it wrote
@@ -372,7 +385,7 @@ struct ProbeClient::Impl {
   }
 
   // Why the probe stopped answering: it died (how, and its last words), or it closed fd 4.
-  std::string crashReport() {
+  Outcome crashReport() {
     // Give a dying probe a moment to finish dying, so its signal is what we report.
     const auto until = Clock::now() + std::chrono::milliseconds(300);
     bool alive = process->alive();
@@ -390,17 +403,17 @@ struct ProbeClient::Impl {
     }
     const std::string last = tail(exit.output, 10, 2000);
     if (!last.empty()) text += "\nthe last lines it printed:\n" + last;
-    return text;
+    return failure(Fault::Crashed, text);
   }
 
   // One request's bytes out and one answer's text back, within `deadline`. Returns why not, or
-  // "" (the probe is stopped on a time-out, a crash or garbage).
-  std::string exchange(const std::string& bytes, const Deadline& deadline, std::string& body) {
+  // no fault (the probe is stopped on a time-out, a crash or garbage).
+  Outcome exchange(const std::string& bytes, const Deadline& deadline, std::string& body) {
     auto timedOut = [&] {
       shutdown("ran out of time");
       ++incidents.timeouts;
-      return "your code took longer than " + seconds(timeout) +
-             " s on this request (the time limit), so it was stopped";
+      return failure(Fault::TimedOut, "your code took longer than " + seconds(timeout) +
+                                          " s on this request (the time limit), so it was stopped");
     };
     Io io = sendAll(toProbe, bytes, deadline);
     if (io == Io::TimedOut) return timedOut();
@@ -412,41 +425,43 @@ struct ProbeClient::Impl {
           wire::frameLength(reinterpret_cast<const unsigned char*>(header.data()));
       if (n > kMaxAnswerBytes) {
         shutdown("sent garbage");
-        return "garbage from the probe: an answer of " + std::to_string(n) +
-               " bytes announced, over the limit of " + std::to_string(kMaxAnswerBytes);
+        return failure(Fault::Garbage, "garbage from the probe: an answer of " + std::to_string(n) +
+                                           " bytes announced, over the limit of " +
+                                           std::to_string(kMaxAnswerBytes));
       }
       body.reserve(std::min<std::size_t>(n, 1u << 20));
       io = receiveExactly(fromProbe, n, body, deadline);
     }
     if (io == Io::TimedOut) return timedOut();
     if (io == Io::Closed) return crashReport();
-    return "";
+    return {};
   }
 
   // A probe just started: it must answer a request that runs no student code, and then show,
   // in /proc, its seccomp filter on top of the sandbox's and a single thread
-  // (grader/probe/filter.h). Returns why it cannot serve, or "".
-  std::string verifyStarted(const Deadline& deadline) {
+  // (grader/probe/filter.h). Returns why it cannot serve, or no fault.
+  Outcome verifyStarted(const Deadline& deadline) {
     harness::SceneRequest ping;
     ping.frames = {-1};
     std::string body;
-    if (std::string error = exchange(wire::frame(wire::encodeRunScene(ping)), deadline, body);
-        !error.empty()) {
-      return error;
+    if (Outcome failed = exchange(wire::frame(wire::encodeRunScene(ping)), deadline, body);
+        !failed.ok()) {
+      return failed;
     }
     const std::optional<process::Info> info = process::describe(process->pid());
     const bool filtered =
         info && info->seccompMode == 2 && (info->seccompFilters < 0 || info->seccompFilters >= 2);
-    if (info && filtered && info->threads == 1) return "";
+    if (info && filtered && info->threads == 1) return {};
     const std::string what =
         !info       ? "it could not be inspected"
         : !filtered ? "it runs without its seccomp filter"
                     : "it runs " + std::to_string(info->threads) + " threads instead of one";
     shutdown("failed its start-up check");
     ++incidents.startFailures;
-    return "the probe failed the grader's start-up check: " + what +
-           " (code that runs before main, such as a static initializer, must not start threads "
-           "or change how the program starts)";
+    return failure(Fault::BadStart,
+                   "the probe failed the grader's start-up check: " + what +
+                       " (code that runs before main, such as a static initializer, must not "
+                       "start threads or change how the program starts)");
   }
 
   template <typename Result>
@@ -457,33 +472,32 @@ struct ProbeClient::Impl {
     try {
       bytes = wire::frame(encode());
     } catch (const std::exception& e) {
-      failed.error = std::string("the grader could not encode the request: ") + e.what();
+      failed.fail(Fault::GraderError,
+                  reworded(std::string("the grader could not encode the request: ") + e.what()));
       return failed;
     }
     checkQuiet();
     const Deadline deadline{Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                                std::chrono::duration<double>(timeout)),
                             timeout, &forceAnswers, forceAnswers.load()};
+    Outcome why;
     if (!process) {
-      if (std::string error = ensureStarted(); !error.empty()) {
-        failed.error = error;
-        return failed;
-      }
-      if (std::string error = verifyStarted(deadline); !error.empty()) {
-        failed.error = error;
-        return failed;
-      }
+      why = ensureStarted();
+      if (why.ok()) why = verifyStarted(deadline);
     }
     std::string body;
-    if (std::string error = exchange(bytes, deadline, body); !error.empty()) {
-      failed.error = error;
+    if (why.ok()) why = exchange(bytes, deadline, body);
+    if (!why.ok()) {
+      static_cast<Outcome&>(failed) = why;
       return failed;
     }
     try {
-      return decode(parseAnswer(body));
+      Result answer = decode(parseAnswer(body));
+      if (!answer.error.empty()) answer.error = reworded(std::move(answer.error));
+      return answer;
     } catch (const std::exception& e) {
       shutdown("sent garbage");
-      failed.error = std::string("garbage from the probe: ") + e.what();
+      failed.fail(Fault::Garbage, reworded(std::string("garbage from the probe: ") + e.what()));
       return failed;
     }
   }
@@ -651,5 +665,15 @@ std::vector<std::string> ProbePair::notes() const {
   }
   return all;
 }
+
+std::string reworded(std::string words) {
+  static const bool on = [] {
+    const char* v = std::getenv("A6_REWORD_MESSAGES");
+    return v != nullptr && std::string(v) == "1";
+  }();
+  return on ? "[reworded] " + words : words;
+}
+
+SandboxView probeView(const std::vector<fs::path>& secrets) { return allowOnly({}, secrets); }
 
 }  // namespace a6::grader

@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "build.h"
-#include "intake.h"
-#include "rubric.h"
+#include "build/build.h"
+#include "intake/intake.h"
+#include "scoring/rubric.h"
 
 namespace a6::grader {
 

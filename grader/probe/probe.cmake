@@ -1,8 +1,6 @@
-# The probe and how the grader talks to it (helper "probe"): the wire format, the probe's main,
-# the kit a submission's probe links against, the sandbox and the probe client.
-find_package(PkgConfig REQUIRED)
-pkg_check_modules(SECCOMP REQUIRED IMPORTED_TARGET GLOBAL libseccomp)
-find_package(Threads REQUIRED)
+# The probe (probe/): the wire format, the probe's main, what a submission's probe links against
+# (a6_probe_kit, the link line A6_PROBE_LINK_*), and the client that talks to a sandboxed probe
+# (a6_probe_client). Takes a6_sandbox (sandbox/sandbox.cmake).
 
 # The harness's plain data as JSON, and the reference forces over a pipe: both ends.
 add_library(a6_wire STATIC ${PROJECT_SOURCE_DIR}/framework/harness/wire.cpp
@@ -28,9 +26,9 @@ add_library(a6_probe_kit STATIC $<TARGET_OBJECTS:a6_framework> $<TARGET_OBJECTS:
 set_target_properties(a6_probe_kit PROPERTIES LINKER_LANGUAGE CXX)
 target_link_libraries(a6_probe_kit INTERFACE a6_harness_api box2d::box2d)
 
-# How a submission's probe is linked (what grader/build.cpp runs, in the sandbox):
+# How a submission's probe is linked (what grader/build/build.cpp runs, in the sandbox):
 #   <compiler> -o <probe> <A6_PROBE_LINK_MAIN> <the six task objects> <A6_PROBE_LINK_LIBRARIES>
-# For intake_build.cmake (included after this file) and for the tests' hostile probes.
+# For build/build.cmake (read after this file) and for the tests' hostile probes.
 set(A6_PROBE_LINK_COMPILER ${CMAKE_CXX_COMPILER})
 set(A6_PROBE_LINK_MAIN "$<TARGET_OBJECTS:a6_probe_main>")
 set(A6_PROBE_LINK_MODELS_MAIN "$<TARGET_OBJECTS:a6_probe_main_models>")
@@ -62,17 +60,8 @@ foreach(set IN LISTS probe_sets)
                                                 a6_probe_kit)
 endforeach()
 
-# The process layer (waiting, ending strays and a sandbox user's processes, claiming a user), the
-# sandbox, and the StudentCode that talks to a sandboxed probe.
-add_library(a6_process STATIC ${CMAKE_CURRENT_SOURCE_DIR}/process.cpp)
-target_include_directories(a6_process PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_compile_options(a6_process PRIVATE ${A6_WARNINGS})
 
-add_library(a6_sandbox STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox.cpp)
-target_include_directories(a6_sandbox PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(a6_sandbox PUBLIC a6_process PkgConfig::SECCOMP Threads::Threads)
-target_compile_options(a6_sandbox PRIVATE ${A6_WARNINGS})
-
-add_library(a6_probe_client STATIC ${CMAKE_CURRENT_SOURCE_DIR}/probe_client.cpp)
+# The StudentCode that talks to a sandboxed probe.
+add_library(a6_probe_client STATIC ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_client.cpp)
 target_link_libraries(a6_probe_client PUBLIC a6_sandbox a6_wire a6_harness_api)
 target_compile_options(a6_probe_client PRIVATE ${A6_WARNINGS})

@@ -2,7 +2,7 @@
 // fresh empty working directory, no network, captured and capped output, privileges dropped
 // when the grader runs as root. See docs/instructor.md for what this does and does not protect.
 //
-// Design note: what the child gets, in order (grader/sandbox.cpp prepares everything before
+// Design note: what the child gets, in order (grader/sandbox/sandbox.cpp prepares everything before
 // fork(), so the child between fork and exec only makes system calls):
 //   1. its own session and process group (the parent kills the whole group with SIGKILL);
 //   2. as root: a private mount namespace where every `hide` path is covered (a directory by an
@@ -16,7 +16,7 @@
 //      Limits::outputBytes; the rest is read and dropped so the child never blocks), the
 //      requested fds, every other fd closed;
 //   5. cwd = the fresh work dir; as root: setgroups(0), setgid/setuid to `uid`/`gid` (a
-//      grading's own user, grader/process.h);
+//      grading's own user, grader/sandbox/process.h);
 //      a parent-death signal (SIGKILL);
 //   6. no_new_privs and a seccomp filter: socket() fails with EACCES (the network stays off even
 //      where namespaces are not permitted, e.g. an unprivileged Docker container), io_uring,

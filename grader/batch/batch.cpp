@@ -10,7 +10,7 @@
 // Keys (a submission's folder under the output folder) must come out the same on every run, or
 // a resumed batch would not find its markers: the entries are read in sorted order and a
 // duplicate key gets "-2", "-3", ... in that order.
-#include "batch.h"
+#include "batch/batch.h"
 
 #include <algorithm>
 #include <cctype>

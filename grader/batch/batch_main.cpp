@@ -1,4 +1,4 @@
-// a6_batch: grades every submission in a folder, each by its own a6_grade (grader/batch.h).
+// a6_batch: grades every submission in a folder, each by its own a6_grade (grader/batch/batch.h).
 //
 //   a6_batch INPUT --out DIR [-j N] [--timeout S] [--layout plain|gradescope|canvas] [--force]
 //            [--grader PATH] [--rubric FILE] [--kit FILE] [--seed N] [--time-budget S]
@@ -35,8 +35,8 @@
 // that each a6_grade finds them to hide.
 //
 // Other students' processes: as root, every a6_grade claims a sandbox user of its own for its
-// whole grading (grader/process.h), so gradings that run at once never share a process limit,
-// and a process one submission left behind cannot touch the next one's.
+// whole grading (grader/sandbox/process.h), so gradings that run at once never share a process
+// limit, and a process one submission left behind cannot touch the next one's.
 //
 // Reaping: every wait names its pid (an a6_grade of ours, or a stray being ended), never
 // waitpid(-1), which could reap an a6_grade before the loop that waits for it: that batch would
@@ -65,9 +65,9 @@
 #include <thread>
 #include <vector>
 
-#include "batch.h"
-#include "process.h"
-#include "report.h"  // writeFileAtomically
+#include "batch/batch.h"
+#include "report/report.h"  // writeFileAtomically
+#include "sandbox/process.h"
 
 #ifndef A6_DEFAULT_RUBRIC
 #define A6_DEFAULT_RUBRIC ""

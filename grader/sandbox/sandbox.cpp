@@ -6,7 +6,7 @@
 // paths, the mount plan, the rlimits, the seccomp program) is prepared in a Plan before fork,
 // and the child reports what failed through a close-on-exec status pipe as fixed-size records
 // (stage, errno); the parent turns them into sentences. EOF on that pipe means execve worked.
-#include "sandbox.h"
+#include "sandbox/sandbox.h"
 
 #include <fcntl.h>
 #include <linux/filter.h>

@@ -1,5 +1,5 @@
 // The process layer (see process.h).
-#include "process.h"
+#include "sandbox/process.h"
 
 #include <fcntl.h>
 #include <grp.h>

@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "intake.h"
-#include "sandbox.h"
+#include "intake/intake.h"
+#include "sandbox/sandbox.h"
 
 namespace a6::grader {
 
 /// What was built once, read from BUILD/grader/kit.json (written by CMake,
-/// grader/cmake/intake_build.cmake). What a compile reads besides the system headers sits in
+/// grader/build/build.cmake). What a compile reads besides the system headers sits in
 /// `dir`; the link also reads `probeMain` and `linkInputs`.
 struct Kit {
   std::string compiler;                   ///< absolute path of the C++ compiler

@@ -4,7 +4,7 @@
 // -----------
 // Compiling is as untrusted as running: `#include "/path/to/solution/spring.cpp"` would copy the
 // solution into the student's object, and an error message would print it. So the compiler and
-// the linker run in the sandbox (grader/sandbox.h) with the kit's secrets hidden (the
+// the linker run in the sandbox (grader/sandbox/sandbox.h) with the kit's secrets hidden (the
 // repository and the build tree) except the kit folder (staged a6/ headers, the precompiled
 // header, starter objects), the probe's link inputs, the work folder and the student's files.
 // Hiding a folder except something inside it is done by hiding its other entries, level by
@@ -16,7 +16,7 @@
 // framework defines, or lacks a function the framework calls because it was renamed): then the
 // objects the linker complains about are replaced, one at a time, by the starter's, until the
 // probe links; the starter alone always links.
-#include "build.h"
+#include "build/build.h"
 
 #include <elf.h>
 #include <sys/stat.h>
@@ -239,7 +239,7 @@ Kit loadKit(const fs::path& kitJson) {
 namespace {
 using ToolRunner = std::function<Exit(const fs::path& dir, std::vector<std::string> argv)>;
 
-// As grader/cmake/probe.cmake links: main, the six objects in task order, the libraries; the
+// As grader/probe/probe.cmake links: main, the six objects in task order, the libraries; the
 // result stripped (no symbol table to search for what the framework holds).
 std::vector<std::string> linkCommand(const Kit& kit, const std::vector<std::string>& main,
                                      const std::vector<fs::path>& objects, const std::string& out) {

@@ -1,4 +1,4 @@
-#include "report.h"
+#include "report/report.h"
 
 #include <fcntl.h>
 #include <unistd.h>

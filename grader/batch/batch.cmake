@@ -1,14 +1,14 @@
-# Grading a folder of submissions (a6_batch, grader/batch_main.cpp): helper "batch". It runs
+# Grading a folder of submissions (batch/: a6_batch, batch_main.cpp). It runs
 # a6_grade once per submission as a child process, so it links none of the grading itself: the
 # layouts, the gradebook and the markers (a6_batch_core), and a6_report for its atomic writes.
 find_package(CLI11 REQUIRED)
 
-add_library(a6_batch_core STATIC ${CMAKE_CURRENT_SOURCE_DIR}/batch.cpp)
+add_library(a6_batch_core STATIC ${CMAKE_CURRENT_SOURCE_DIR}/batch/batch.cpp)
 target_include_directories(a6_batch_core PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_batch_core PRIVATE nlohmann_json::nlohmann_json)
 target_compile_options(a6_batch_core PRIVATE ${A6_WARNINGS})
 
-add_executable(a6_batch ${CMAKE_CURRENT_SOURCE_DIR}/batch_main.cpp)
+add_executable(a6_batch ${CMAKE_CURRENT_SOURCE_DIR}/batch/batch_main.cpp)
 target_link_libraries(a6_batch PRIVATE a6_batch_core a6_report a6_process CLI11::CLI11)
 # The default rubric, as a6_grade reads it: part of every submission's fingerprint, so that a
 # changed rubric regrades.

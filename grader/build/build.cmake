@@ -1,5 +1,6 @@
-# Taking a submission in (a6_intake), building its probe (a6_build), and the kit the build
-# links against (a6_grader_kit, described by BUILD/grader/kit.json): helper "intake_build".
+# Build (build/): the six task files to a linked probe, each file compiled alone in the sandbox
+# (a6_build), and the kit the build links against (a6_grader_kit, described by
+# BUILD/grader/kit.json). Takes a6_sandbox and the probe's link line (probe/probe.cmake).
 #
 # The kit folder, BUILD/grader/kit/, holds what a submission's compile reads besides the system
 # headers, so that the sandbox can hide the rest of the repository and the build tree:
@@ -10,10 +11,10 @@
 #   starter/<task>.o      the starter's six objects (a missing or broken task file falls back)
 #   starter/<task>.syms   the symbols each defines, demangled (to tell which task a link error
 #                         about an undefined symbol belongs to)
-# The probe's main object and libraries stay where helper "probe" builds them (probe.cmake's
+# The probe's main object and libraries stay where probe/probe.cmake builds them (its
 # A6_PROBE_LINK_MAIN and A6_PROBE_LINK_LIBRARIES); kit.json names them and the build reveals them.
 
-# Script mode: cmake -DNM=... -DOBJECT=... -DOUT=... -P intake_build.cmake writes the symbols
+# Script mode: cmake -DNM=... -DOBJECT=... -DOUT=... -P build.cmake writes the symbols
 # OBJECT defines, one per line.
 if(CMAKE_SCRIPT_MODE_FILE)
   execute_process(COMMAND ${NM} -C -g --defined-only -j ${OBJECT}
@@ -24,26 +25,15 @@ if(CMAKE_SCRIPT_MODE_FILE)
   return()
 endif()
 
-find_package(LibArchive 3 REQUIRED)
-
-add_library(a6_intake STATIC ${CMAKE_CURRENT_SOURCE_DIR}/intake.cpp)
-target_include_directories(a6_intake PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(a6_intake PRIVATE LibArchive::LibArchive)
-target_compile_options(a6_intake PRIVATE ${A6_WARNINGS})
-
 set(A6_KIT_DIR ${CMAKE_CURRENT_BINARY_DIR}/kit)
 set(A6_KIT_JSON ${CMAKE_CURRENT_BINARY_DIR}/kit.json)
 
-# The build runs the compiler and the linker in the sandbox (helper "probe"'s a6_sandbox).
-if(TARGET a6_sandbox)
-  add_library(a6_build STATIC ${CMAKE_CURRENT_SOURCE_DIR}/build.cpp)
-  target_include_directories(a6_build PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-  target_link_libraries(a6_build PUBLIC a6_sandbox PRIVATE nlohmann_json::nlohmann_json)
-  target_compile_definitions(a6_build PRIVATE A6_DEFAULT_KIT_JSON="${A6_KIT_JSON}")
-  target_compile_options(a6_build PRIVATE ${A6_WARNINGS})
-else()
-  message(STATUS "grader: no a6_sandbox (grader/cmake/probe.cmake), so no a6_build")
-endif()
+# The build runs the compiler and the linker in the sandbox (a6_sandbox).
+add_library(a6_build STATIC ${CMAKE_CURRENT_SOURCE_DIR}/build/build.cpp)
+target_include_directories(a6_build PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(a6_build PUBLIC a6_sandbox PRIVATE nlohmann_json::nlohmann_json)
+target_compile_definitions(a6_build PRIVATE A6_DEFAULT_KIT_JSON="${A6_KIT_JSON}")
+target_compile_options(a6_build PRIVATE ${A6_WARNINGS})
 
 # ---- the kit ----
 
@@ -119,17 +109,10 @@ add_custom_command(
 list(APPEND kit_files ${A6_KIT_PCH}.gch)
 list(APPEND A6_KIT_COMPILE_FLAGS -include ${A6_KIT_PCH})
 
-# What the probe links besides the student's six objects (helper "probe"'s probe.cmake).
-if(DEFINED A6_PROBE_LINK_MAIN AND DEFINED A6_PROBE_LINK_LIBRARIES)
-  set(A6_KIT_PROBE_MAIN ${A6_PROBE_LINK_MAIN})
-  set(A6_KIT_MODELS_MAIN ${A6_PROBE_LINK_MODELS_MAIN})
-  set(A6_KIT_LINK_INPUTS ${A6_PROBE_LINK_LIBRARIES})
-else()
-  set(A6_KIT_PROBE_MAIN "")
-  set(A6_KIT_MODELS_MAIN "")
-  set(A6_KIT_LINK_INPUTS "")
-  message(STATUS "grader kit: no probe link line (grader/cmake/probe.cmake) yet")
-endif()
+# What the probe links besides the student's six objects (probe/probe.cmake's link line).
+set(A6_KIT_PROBE_MAIN ${A6_PROBE_LINK_MAIN})
+set(A6_KIT_MODELS_MAIN ${A6_PROBE_LINK_MODELS_MAIN})
+set(A6_KIT_LINK_INPUTS ${A6_PROBE_LINK_LIBRARIES})
 
 # kit.json (see Kit in build.h).
 # Items may be generator expressions that expand to lists ($<TARGET_OBJECTS:...>).
@@ -165,6 +148,4 @@ file(GENERATE OUTPUT ${A6_KIT_JSON} CONTENT "{
 ")
 
 add_custom_target(a6_grader_kit ALL DEPENDS ${kit_files})
-if(DEFINED A6_PROBE_LINK_TARGETS)
-  add_dependencies(a6_grader_kit ${A6_PROBE_LINK_TARGETS})
-endif()
+add_dependencies(a6_grader_kit ${A6_PROBE_LINK_TARGETS})

@@ -1,4 +1,4 @@
-#include "rubric.h"
+#include "scoring/rubric.h"
 
 #include <toml++/toml.h>
 

@@ -1,0 +1,139 @@
+#include "checks/budgeted_student.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "probe/probe_client.h"
+
+namespace a6::grader {
+
+namespace {
+BudgetedStudent::Clock::duration seconds(double s) {
+  return std::chrono::duration_cast<BudgetedStudent::Clock::duration>(
+      std::chrono::duration<double>(s));
+}
+double secondsUntil(BudgetedStudent::Clock::time_point t) {
+  return std::chrono::duration<double>(t - BudgetedStudent::Clock::now()).count();
+}
+}  // namespace
+
+void BudgetedStudent::setTotalBudget(double s) {
+  budget_ = s;
+  budgetEnd_ = Clock::now() + seconds(s);
+}
+
+void BudgetedStudent::startTest(double s) {
+  limit_ = s;
+  answersAtStart_ = hooks_.forceAnswers ? hooks_.forceAnswers() : 0;
+  deadline_ = Clock::now() + seconds(s);
+  lastFailure_.clear();
+  closeCheck();
+  if (hooks_.newCheck) hooks_.newCheck();
+}
+
+int BudgetedStudent::checksOutOfTime() {
+  closeCheck();
+  return checksOutOfTime_ + (budgetSpent_ ? 1 : 0);
+}
+
+void BudgetedStudent::closeCheck() {
+  const int timeouts = hooks_.probeTimeouts ? hooks_.probeTimeouts() : 0;
+  if (outOfTime_ || timeouts > timeoutsAtStart_) ++checksOutOfTime_;
+  timeoutsAtStart_ = timeouts;
+  outOfTime_ = false;
+}
+
+std::string BudgetedStudent::refusal(double& remaining) {
+  const double overall = secondsUntil(budgetEnd_);
+  if (overall < 0.01) {
+    budgetSpent_ = true;
+    std::ostringstream out;
+    out << "not run: the checks before it used up the time all checks together may take ("
+        << budget_ << " s; their messages say which ran out of time)";
+    return out.str();
+  }
+  const double allowance =
+      hooks_.forceAnswers ? forceWaitAllowance(hooks_.forceAnswers() - answersAtStart_, limit_) : 0;
+  remaining = secondsUntil(deadline_) + allowance;
+  if (remaining < 0.01) {
+    outOfTime_ = true;
+    std::ostringstream out;
+    out << "this check's time limit of " << limit_
+        << " s ran out (is there an endless loop, or a loop that runs far too often?)";
+    return out.str();
+  }
+  remaining = std::min(remaining, overall);
+  return "";
+}
+
+void BudgetedStudent::interpret(harness::Outcome& result) {
+  switch (result.fault) {
+    case harness::Fault::None:
+      return;
+    case harness::Fault::StartFailed:  // the sandbox could not start it: a grader problem
+      if (startError_.empty()) startError_ = result.error;
+      lastFailure_ = result.error;
+      return;
+    case harness::Fault::StartsUsedUp:  // say why, in the check's terms
+      result.error =
+          reworded("your code crashed or ran out of time " + std::to_string(kStartsPerCheck) +
+                   " times in this check, so its other requests were not run" +
+                   (lastFailure_.empty() ? "" : "; the last time: " + lastFailure_));
+      return;
+    default:
+      lastFailure_ = result.error;
+  }
+}
+
+template <class Result, class Call>
+Result BudgetedStudent::call(Call&& forward) {
+  Result result;
+  if (probe_ == nullptr) {
+    result.fail(harness::Fault::Unavailable, reworded(unavailable_));
+    return result;
+  }
+  double remaining = 0;
+  if (std::string why = refusal(remaining); !why.empty()) {
+    result.fail(harness::Fault::NotRun, reworded(std::move(why)));
+    return result;
+  }
+  if (hooks_.setTimeout) hooks_.setTimeout(remaining);
+  try {
+    result = forward();
+    interpret(result);
+    return result;
+  } catch (const std::exception& e) {
+    result.fail(harness::Fault::GraderError,
+                std::string("the grader could not run your code: ") + e.what());
+  } catch (...) {
+    result.fail(harness::Fault::GraderError, "the grader could not run your code (unknown error)");
+  }
+  return result;
+}
+
+harness::SpringForceResult BudgetedStudent::springForce(const harness::SpringForceRequest& r) {
+  return call<harness::SpringForceResult>([&] { return probe_->springForce(r); });
+}
+harness::ForcesResult BudgetedStudent::forces(const harness::ForcesRequest& r) {
+  return call<harness::ForcesResult>([&] { return probe_->forces(r); });
+}
+harness::SimulateResult BudgetedStudent::simulate(const harness::SimulateRequest& r) {
+  return call<harness::SimulateResult>([&] { return probe_->simulate(r); });
+}
+harness::ClothResult BudgetedStudent::buildCloth(const ClothSpec& s) {
+  return call<harness::ClothResult>([&] { return probe_->buildCloth(s); });
+}
+harness::ParticlesResult BudgetedStudent::emit(const harness::EmitRequest& r) {
+  return call<harness::ParticlesResult>([&] { return probe_->emit(r); });
+}
+harness::ParticlesResult BudgetedStudent::runParticles(const harness::ParticleRunRequest& r) {
+  return call<harness::ParticlesResult>([&] { return probe_->runParticles(r); });
+}
+harness::Box2DResult BudgetedStudent::runBox2D(const harness::Box2DRequest& r) {
+  return call<harness::Box2DResult>([&] { return probe_->runBox2D(r); });
+}
+harness::SceneResult BudgetedStudent::runScene(const harness::SceneRequest& r) {
+  return call<harness::SceneResult>([&] { return probe_->runScene(r); });
+}
+
+}  // namespace a6::grader

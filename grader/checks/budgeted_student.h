@@ -1,0 +1,91 @@
+// The student's code as the suite sees it in the grader (checks stage): the probe, within the
+// running check's time limit and the time budget of all checks together. Without a probe (the
+// build failed) every request fails with the reason, so each check fails with a message
+// instead of the grader stopping. Takes the probe and its hooks; gives each request's result
+// and, at the end, how many checks ran out of time.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "harness/student_code.h"
+
+namespace a6::grader {
+
+/// A check whose requests crash the probe (or run out of time) gets this many probe starts; its
+/// other requests then fail at once. So code that crashes on every call costs its own checks,
+/// not the probe's restarts for every task after it.
+constexpr int kStartsPerCheck = 3;
+/// The time limit of a check that matches no rubric item, s.
+constexpr double kDefaultTimeLimit = 10;
+
+class BudgetedStudent final : public harness::StudentCode {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  /// The probe's hooks (all may be empty): give the probe a request's time limit, give it a new
+  /// check's starts, count the forces the grader answered it, count its stopped requests.
+  struct Hooks {
+    std::function<void(double)> setTimeout;
+    std::function<void()> newCheck;
+    std::function<std::size_t()> forceAnswers;
+    std::function<int()> probeTimeouts;
+  };
+
+  /// `probe` may be null: every request then fails with `unavailable`.
+  BudgetedStudent(harness::StudentCode* probe, Hooks hooks, std::string unavailable)
+      : probe_(probe), hooks_(std::move(hooks)), unavailable_(std::move(unavailable)) {}
+
+  /// Why the probe could not be started at all (a grader problem), or "".
+  const std::string& startError() const { return startError_; }
+
+  /// All checks together may use `seconds` of the student's code's time, from now on.
+  void setTotalBudget(double seconds);
+  /// A new check starts: its requests share `seconds` of wall-clock time (plus the allowance
+  /// for the forces the grader answers meanwhile).
+  void startTest(double seconds);
+  /// How many checks ran out of their time (a request stopped at its limit, or the check's
+  /// limit reached between requests), each counted once, plus one when the time budget of all
+  /// checks was spent.
+  int checksOutOfTime();
+
+  harness::SpringForceResult springForce(const harness::SpringForceRequest& r) override;
+  harness::ForcesResult forces(const harness::ForcesRequest& r) override;
+  harness::SimulateResult simulate(const harness::SimulateRequest& r) override;
+  harness::ClothResult buildCloth(const ClothSpec& s) override;
+  harness::ParticlesResult emit(const harness::EmitRequest& r) override;
+  harness::ParticlesResult runParticles(const harness::ParticleRunRequest& r) override;
+  harness::Box2DResult runBox2D(const harness::Box2DRequest& r) override;
+  harness::SceneResult runScene(const harness::SceneRequest& r) override;
+
+ private:
+  template <class Result, class Call>
+  Result call(Call&& forward);
+  // Why a request is not sent at all (the budget or the check's time spent), or "".
+  std::string refusal(double& remaining);
+  // The probe's answer, with a used-up check's starts said in the check's terms.
+  void interpret(harness::Outcome& result);
+  // Counts the check that just ended if it ran out of time, once however many of its
+  // requests did.
+  void closeCheck();
+
+  harness::StudentCode* probe_;
+  Hooks hooks_;
+  std::string unavailable_;
+  std::string lastFailure_;  // the last failed request of the running check
+  std::string startError_;
+  // The running check ran out of its time between requests; the probes' time-outs when it began.
+  bool outOfTime_ = false;
+  int timeoutsAtStart_ = 0;
+  int checksOutOfTime_ = 0;
+  bool budgetSpent_ = false;
+  double limit_ = kDefaultTimeLimit;
+  Clock::time_point deadline_ = Clock::now();
+  std::size_t answersAtStart_ = 0;
+  double budget_ = 0;
+  Clock::time_point budgetEnd_ = Clock::time_point::max();
+};
+
+}  // namespace a6::grader

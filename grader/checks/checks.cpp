@@ -1,0 +1,242 @@
+#include "checks/checks.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <functional>
+#include <memory>
+
+#include "checks/budgeted_student.h"
+#include "checks/collector.h"
+#include "golden_checks.h"
+#include "gtest_flags.h"
+#include "probe/probe_client.h"
+#include "suite.h"
+
+namespace fs = std::filesystem;
+
+namespace a6::grader {
+namespace {
+
+// The reference force models (tasks 1 and 2 solved; in a student release, empty: the student's
+// own). They stay in this process: the probe of tasks 3 and 5 asks for each force over a pipe
+// (harness/force_channel.h).
+#include A6_FORCE_MODELS
+
+constexpr std::size_t kProbeOutputCap = 64u << 10;  // what the report keeps of the probe's output
+
+// The student's code while the checks run (a6::test::student()).
+BudgetedStudent* gStudent = nullptr;
+
+// Where a rubric item is written, for messages: "rubric.toml:45".
+std::string placeOf(const Rubric& rubric, const RubricItem& item) {
+  return rubric.file.string() + ":" + std::to_string(item.line);
+}
+
+void pinFlags(std::uint64_t seed, const std::string& filter) {
+  A6_GTEST_FLAG_SET(filter, filter.empty() ? std::string("*") : filter);
+  A6_GTEST_FLAG_SET(also_run_disabled_tests, false);
+  A6_GTEST_FLAG_SET(shuffle, false);
+  A6_GTEST_FLAG_SET(repeat, 1);
+  A6_GTEST_FLAG_SET(fail_fast, false);
+  A6_GTEST_FLAG_SET(break_on_failure, false);
+  A6_GTEST_FLAG_SET(throw_on_failure, false);
+  A6_GTEST_FLAG_SET(catch_exceptions, true);
+  A6_GTEST_FLAG_SET(output, std::string());
+  A6_GTEST_FLAG_SET(brief, true);
+  // GoogleTest's seed (1..99999), for checks that draw their inputs at random.
+  A6_GTEST_FLAG_SET(random_seed, static_cast<std::int32_t>(seed % 99999 + 1));
+}
+
+// The two probes as one StudentCode, each started as the sandbox's user with the probe's view.
+std::unique_ptr<ProbePair> startProbes(const ChecksInput& in) {
+  auto client = [&](const fs::path& program, const char* runDir) {
+    auto c = std::make_unique<ProbeClient>(program, in.work / runDir, Limits{});
+    const SandboxView view = probeView(in.secrets);
+    c->setHidden(view.hide, view.reveal);
+    c->setUser(in.uid, in.gid);
+    return c;
+  };
+  std::unique_ptr<ProbeClient> models = client(in.modelsProbe, "run-models");
+  models->serveForces(referenceForceModel());
+  return std::make_unique<ProbePair>(client(in.probe, "run"), std::move(models));
+}
+
+BudgetedStudent::Hooks hooksOf(ProbePair* pair) {
+  BudgetedStudent::Hooks hooks;
+  if (pair == nullptr) return hooks;
+  hooks.setTimeout = [pair](double seconds) { pair->setRequestTimeout(seconds); };
+  hooks.forceAnswers = [pair] { return pair->forceAnswers(); };
+  hooks.probeTimeouts = [pair] { return pair->incidents().timeouts; };
+  hooks.newCheck = [pair] { pair->allowMoreStarts(kStartsPerCheck); };
+  return hooks;
+}
+
+// RUN_ALL_TESTS with a Collector; how many checks were skipped.
+int runAll(const Rubric& rubric, ChecksRun& run, BudgetedStudent& student, bool progress) {
+  auto* collector = new Collector(
+      rubric, run.tests, [&student](double limit) { student.startTest(limit); }, progress);
+  ::testing::UnitTest::GetInstance()->listeners().Append(collector);  // GoogleTest owns it
+  // Its status only repeats what the collector saw.
+  if (RUN_ALL_TESTS() != 0 && progress) std::fprintf(stderr, "a6_grade: some checks failed\n");
+  return collector->skipped();
+}
+
+// What the probes did, for the report.
+void collectIncidents(const ProbePair& pair, BudgetedStudent& student, ChecksRun& run) {
+  run.probeOutput = pair.output(kProbeOutputCap);
+  for (const std::string& note : pair.notes()) run.notes.push_back("sandbox: " + note);
+  const ProbeIncidents incidents = pair.incidents();
+  run.incidents.crashes = incidents.crashes;
+  run.incidents.timeouts = student.checksOutOfTime();
+  run.incidents.startFailures = incidents.startFailures;
+  if (pair.restarts() > 0) {
+    run.notes.push_back("the probes were restarted " + std::to_string(pair.restarts()) +
+                        " times (after crashes or time limits)");
+  }
+}
+
+}  // namespace
+
+void registerChecks(std::uint64_t seed, const std::string& filter, const fs::path& imagesDir,
+                    bool inReportOnly) {
+  static char program[] = "a6_grade";
+  static char* argv[] = {program, nullptr};
+  int argc = 1;
+  ::testing::InitGoogleTest(&argc, argv);
+  pinFlags(seed, filter);
+  ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
+  delete listeners.Release(listeners.default_result_printer());
+  a6::test::registerGoldenChecks(imagesDir.string(), inReportOnly
+                                                         ? a6::test::ImagePaths::InTheReportOnly
+                                                         : a6::test::ImagePaths::Shown);
+}
+
+std::vector<std::string> registeredChecks() {
+  std::vector<std::string> names;
+  const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
+  for (int s = 0; s < unit.total_test_suite_count(); ++s) {
+    const ::testing::TestSuite& suite = *unit.GetTestSuite(s);
+    for (int t = 0; t < suite.total_test_count(); ++t) {
+      names.push_back(std::string(suite.name()) + "." + suite.GetTestInfo(t)->name());
+    }
+  }
+  return names;
+}
+
+std::vector<std::string> coverageProblems(const Rubric& rubric) {
+  std::vector<int> used(rubric.items.size(), 0);
+  std::vector<std::string> problems;
+  for (const std::string& name : registeredChecks()) {
+    const int item = rubric.itemFor(name);
+    if (item >= 0) {
+      ++used[static_cast<std::size_t>(item)];
+    } else {
+      problems.push_back("the check " + name +
+                         " matches no item's 'tests': it would score nothing (add a glob that "
+                         "matches it to an item)");
+    }
+  }
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    if (used[i] > 0) continue;
+    const RubricItem& item = rubric.items[i];
+    problems.push_back(placeOf(rubric, item) + ": item '" + item.name +
+                       "' matches no check, so its points could never be earned (fix its "
+                       "'tests'; a6_grade --list-tests lists the checks)");
+  }
+  return problems;
+}
+
+int listChecks(const Rubric& rubric) {
+  if (!rubric.ok()) {
+    std::fprintf(stderr, "a6_grade: the rubric is invalid:\n%s\n", rubric.error.c_str());
+    return 1;
+  }
+  for (const std::string& name : registeredChecks()) {
+    const int item = rubric.itemFor(name);
+    std::printf("%s\t%s\n", name.c_str(),
+                item < 0 ? "-" : rubric.items[static_cast<std::size_t>(item)].name.c_str());
+  }
+  const std::vector<std::string> problems = coverageProblems(rubric);
+  for (const std::string& p : problems) std::fprintf(stderr, "a6_grade: %s\n", p.c_str());
+  return problems.empty() ? 0 : 1;
+}
+
+int checkRubricAgainstChecks(const Rubric& rubric) {
+  if (!rubric.ok()) {
+    std::fprintf(stderr, "a6_grade: the rubric is invalid:\n%s\n", rubric.error.c_str());
+    return 2;
+  }
+  const std::vector<std::string> problems = coverageProblems(rubric);
+  for (const std::string& p : problems) std::fprintf(stderr, "a6_grade: %s\n", p.c_str());
+  if (!problems.empty()) return 2;
+  double extra = 0;
+  int hidden = 0;
+  for (const RubricItem& item : rubric.items) {
+    if (item.extraCredit) extra += item.points;
+    if (item.visibility != Visibility::Visible) ++hidden;
+    // Gradescope hides a student's total while any test is unseen, except tests marked hidden
+    // ("they should only be used for tests which don't contribute points").
+    if (item.visibility == Visibility::Hidden && item.points > 0) {
+      std::fprintf(stderr,
+                   "a6_grade: warning: %s: item '%s' is 'hidden' and has points: Gradescope "
+                   "shows students their total all the same, so these points show in it (use "
+                   "after_due_date or after_published to keep them unseen)\n",
+                   placeOf(rubric, item).c_str(), item.name.c_str());
+    }
+  }
+  std::printf(
+      "%s: valid: %zu items (%d shown to students only later), %g points + %g extra "
+      "credit, %zu checks, each counted by an item\n",
+      rubric.file.string().c_str(), rubric.items.size(), hidden, rubric.totalPoints, extra,
+      registeredChecks().size());
+  return 0;
+}
+
+ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
+  ChecksRun run;
+  std::string unavailable = in.unavailable;
+  std::unique_ptr<ProbePair> probes;
+  if (unavailable.empty()) {
+    try {
+      probes = startProbes(in);
+    } catch (const std::exception& e) {
+      run.errors.push_back(std::string("starting the probe failed: ") + e.what());
+      unavailable = "the grader could not start your code (a grader problem, not yours)";
+    }
+  }
+  BudgetedStudent student(probes.get(), hooksOf(probes.get()), unavailable);
+  student.setTotalBudget(in.timeBudget);
+  gStudent = &student;
+  int skipped = 0;
+  try {
+    skipped = runAll(rubric, run, student, in.progress);
+  } catch (const std::exception& e) {
+    run.errors.push_back(std::string("running the checks failed: ") + e.what());
+  }
+  if (!student.startError().empty()) {
+    run.errors.push_back(
+        "the sandbox could not start the probe, so checks failed that may not "
+        "have: " +
+        student.startError());
+  }
+  if (skipped > 0) {
+    run.errors.push_back(std::to_string(skipped) +
+                         " checks were skipped (the grader's environment could not run them; see "
+                         "each check's message): they earned nothing");
+  }
+  if (probes != nullptr) {
+    try {
+      collectIncidents(*probes, student, run);
+    } catch (...) {
+    }
+  }
+  gStudent = nullptr;
+  return run;
+}
+
+}  // namespace a6::grader
+
+namespace a6::test {
+harness::StudentCode& student() { return *a6::grader::gStudent; }
+}  // namespace a6::test

@@ -1,0 +1,75 @@
+// The checks stage: the physics suite (tests/task*_test.cpp, linked into a6_grade) and the
+// golden-image checks, registered in this process and run against the student's code in the
+// sandboxed probe. Student code never runs here: the suite's a6::test::student() is the probe.
+//
+// Takes: the seed and filter the checks are registered with; the built probes and what the
+// probe may see; the time budget. Gives: each check's outcome (TestOutcome), and what the
+// probes did (crashes, time-outs, their output) for the report.
+#pragma once
+
+#include <sys/types.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "report/report.h"
+#include "scoring/rubric.h"
+
+namespace a6::grader {
+
+/// The time the student's code may take over all checks together (--time-budget), s: well
+/// within Gradescope's default of 10 minutes for the whole run, which would otherwise end it
+/// with a 0.
+constexpr double kDefaultTimeBudget = 420;
+
+/// Registers every check with GoogleTest, its flags pinned (nothing from the environment, such
+/// as GTEST_FILTER, changes what runs): `seed` draws the random inputs, `filter` (a GoogleTest
+/// filter, "" for all) chooses the checks. The golden-image checks write their images into
+/// `imagesDir`; with `inReportOnly` their messages do not name those paths (a grading: only the
+/// report shows the images).
+void registerChecks(std::uint64_t seed, const std::string& filter,
+                    const std::filesystem::path& imagesDir, bool inReportOnly);
+
+/// The names of every registered check, in run order.
+std::vector<std::string> registeredChecks();
+
+/// What makes a valid rubric unusable with the registered checks: an item that matches no
+/// check (its points could never be earned) and a check that matches no item (it would score
+/// nothing). One line each, with the place and the fix; empty when every check counts.
+std::vector<std::string> coverageProblems(const Rubric& rubric);
+
+/// --list-tests: every check and the item it counts for; 1 when some check or item is unmatched.
+int listChecks(const Rubric& rubric);
+/// --check-rubric: 0 and a one-line summary when the rubric can be used; 2 and each problem
+/// (place and fix) when not.
+int checkRubricAgainstChecks(const Rubric& rubric);
+
+/// The probes the checks run against, and what they may see.
+struct ChecksInput {
+  std::filesystem::path probe;        ///< serves every request
+  std::filesystem::path modelsProbe;  ///< serves the requests that ask for the reference forces
+  std::filesystem::path work;         ///< the run folders go under it
+  std::vector<std::filesystem::path> secrets;  ///< what the probe must not see
+  uid_t uid = 0;
+  gid_t gid = 0;
+  /// Non-empty when there is no probe to run (the build failed): every request fails with it.
+  std::string unavailable;
+  double timeBudget = kDefaultTimeBudget;
+  bool progress = false;
+};
+
+/// What running the checks gave.
+struct ChecksRun {
+  std::vector<TestOutcome> tests;
+  std::vector<std::string> errors;  ///< the grader's own failures
+  std::vector<std::string> notes;   ///< for instructors (sandbox protections, restarts)
+  std::string probeOutput;          ///< what the probes printed, capped
+  GradeReport::Incidents incidents;
+};
+
+/// Runs every registered check against the probes of `input` (registerChecks first).
+ChecksRun runChecks(const ChecksInput& input, const Rubric& rubric);
+
+}  // namespace a6::grader

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# No decision reads the words of a message: the submissions we keep (below) are graded twice,
+# once as usual and once with A6_REWORD_MESSAGES=1, which prefixes every message of a failed request
+# with "[reworded] " (grader/probe/probe_client.h, reworded()). The score and each item's
+# points and status must be the same both times, and the reworded messages must show the
+# prefix (so the switch did reword them). The grader's seed and a rubric with 2-s time limits
+# are the same for both.
+#
+#   tests/grader/reword_test.sh SOURCE_DIR A6_GRADE OUT_DIR
+# Exit code: 0 when nothing changed, 1 otherwise (each difference named).
+set -uo pipefail
+root="$1" grade="$2" out="$3"
+rm -rf "$out" && mkdir -p "$out" && chmod 755 "$out"
+# The grader's rubric with every time limit cut to 2 s (the correct checks take a few hundredths
+# each), so that the endless loops cost seconds, not minutes.
+sed -E 's/^time_limit = [0-9.]+/time_limit = 2/' "$root/grader/rubric.toml" >"$out/rubric.toml"
+# The cases: by default the solution, the starter, the correct alternatives, the hostile
+# submissions (their requests crash, throw, loop, flood and fail to start: where words were once
+# read) and the wrong versions of task 1; with A6_REWORD_ALL=1 every wrong version and the fork
+# bomb too (about 8 minutes on 2 cores: a wrong version fails no request, so no message of it can
+# be reworded, and the fork bomb spends its whole time budget).
+cases=("$root/solution" "$root/starter")
+for d in "$root"/tests/alternative/*/ "$root"/tests/grader/submissions/*/ "$root"/tests/wrong/*/; do
+  case "${A6_REWORD_ALL:-0}:$d" in
+    0:*/submissions/fork_bomb/ | 0:*/wrong/t[2-6]_*) continue ;;
+  esac
+  cases+=("${d%/}")
+done
+
+# grade_one CASE MODE: CASE graded into $out/MODE/NAME; its scores in $out/MODE/NAME.scores.
+grade_one() {
+  local c=$1 mode=$2 name
+  name=$(basename "$(dirname "$c")")_$(basename "$c")
+  mkdir -p "$out/$mode"
+  A6_REWORD_MESSAGES=$([ "$mode" = reworded ] && echo 1 || echo 0) \
+    "$grade" "$c" --out "$out/$mode/$name" --rubric "$out/rubric.toml" --seed 7 --jobs 1 --quiet \
+    >"$out/$mode/$name.log" 2>&1
+  # The points only: the status of a 0-point item (a sanity check) of a submission that floods
+  # or stalls its probe may change with the machine's load, its points cannot.
+  jq -r '"score \(.score)", (.tests[] | "\(.number) \(.score)")' \
+    "$out/$mode/$name/results.json" >"$out/$mode/$name.scores" 2>/dev/null ||
+    echo "no results.json" >"$out/$mode/$name.scores"
+}
+export -f grade_one
+export out grade
+start=$(date +%s)
+for c in "${cases[@]}"; do printf '%s\0%s\0' "$c" plain "$c" reworded; done |
+  xargs -0 -n 2 -P 2 bash -c 'grade_one "$0" "$1"'
+
+changed=0
+for f in "$out"/plain/*.scores; do
+  name=$(basename "$f")
+  if ! diff -q "$f" "$out/reworded/$name" >/dev/null; then
+    echo "CHANGED by rewording: ${name%.scores}"
+    diff "$f" "$out/reworded/$name" | head -10
+    changed=$((changed + 1))
+  fi
+done
+prefixed=$(grep -l '\[reworded\]' "$out"/reworded/*/results.json 2>/dev/null | wc -l)
+plain_prefixed=$(grep -l '\[reworded\]' "$out"/plain/*/results.json 2>/dev/null | wc -l)
+echo "${#cases[@]} submissions graded twice in $(($(date +%s) - start)) s; $changed changed;" \
+  "$prefixed reworded reports show the prefix, $plain_prefixed plain ones do"
+[ "$changed" -eq 0 ] || { echo "FAIL: a decision read the words of a message"; exit 1; }
+[ "$prefixed" -ge 5 ] || { echo "FAIL: the switch reworded too few reports ($prefixed)"; exit 1; }
+[ "$plain_prefixed" -eq 0 ] || { echo "FAIL: reports were reworded without the switch"; exit 1; }
+echo "PASS: no score or item changed with every message reworded"
