@@ -11,8 +11,11 @@
 #include <exception>
 #include <limits>
 #include <system_error>
+#include <type_traits>
 #include <utility>
 #include <vector>
+
+#include "harness/wire_fields.h"
 
 namespace a6::wire {
 
@@ -68,40 +71,22 @@ auto member(const json& j, const char* name, Decode&& decode) -> decltype(decode
   return within(name, [&] { return decode(value); });
 }
 
-double getDouble(const json& j, const char* name) { return member(j, name, decodeDouble); }
-
-int getInt(const json& j, const char* name) {
-  const json& v = field(j, name);
-  if (!v.is_number_integer()) {
-    throw Malformed(std::string(name) + ": expected an integer, got " + v.type_name());
-  }
+// An int, or Malformed saying why not.
+int toInt(const json& v) {
+  if (!v.is_number_integer())
+    throw Malformed(std::string("expected an integer, got ") + v.type_name());
   if (v.is_number_unsigned()) {
     const auto u = v.get<std::uint64_t>();
     if (u > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
-      throw Malformed(std::string(name) + ": " + std::to_string(u) + " does not fit an int");
+      throw Malformed(std::to_string(u) + " does not fit an int");
     }
     return static_cast<int>(u);
   }
   const auto i = v.get<std::int64_t>();
   if (i < std::numeric_limits<int>::min() || i > std::numeric_limits<int>::max()) {
-    throw Malformed(std::string(name) + ": " + std::to_string(i) + " does not fit an int");
+    throw Malformed(std::to_string(i) + " does not fit an int");
   }
   return static_cast<int>(i);
-}
-
-std::uint64_t getUint64(const json& j, const char* name) {
-  const json& v = field(j, name);
-  if (v.is_number_unsigned()) return v.get<std::uint64_t>();
-  throw Malformed(std::string(name) + ": expected an unsigned integer, got " +
-                  (v.is_number_integer() ? std::string("a negative integer") : v.type_name()));
-}
-
-bool getBool(const json& j, const char* name) {
-  const json& v = field(j, name);
-  if (!v.is_boolean()) {
-    throw Malformed(std::string(name) + ": expected true or false, got " + v.type_name());
-  }
-  return v.get<bool>();
 }
 
 std::string getString(const json& j, const char* name) {
@@ -124,8 +109,6 @@ Vec2 toVec(const json& j) {
               within("[1]", [&] { return decodeDouble(j[1]); }));
 }
 
-Vec2 getVec(const json& j, const char* name) { return member(j, name, toVec); }
-
 // Lists ------------------------------------------------------------------------------------------
 
 template <typename T, typename Encode>
@@ -147,25 +130,6 @@ auto toList(const json& j, Decode&& decode) -> std::vector<decltype(decode(j))> 
   return out;
 }
 
-template <typename Decode>
-auto getList(const json& j, const char* name, Decode&& decode) -> std::vector<decltype(decode(j))> {
-  return member(j, name, [&](const json& v) { return toList(v, decode); });
-}
-
-json ints(const std::vector<int>& v) { return json(v); }
-std::vector<int> toInts(const json& j) {
-  return toList(j, [](const json& e) {
-    if (!e.is_number_integer()) {
-      throw Malformed(std::string("expected an integer, got ") + e.type_name());
-    }
-    const auto i = e.get<std::int64_t>();
-    if (i < std::numeric_limits<int>::min() || i > std::numeric_limits<int>::max()) {
-      throw Malformed(std::to_string(i) + " does not fit an int");
-    }
-    return static_cast<int>(i);
-  });
-}
-
 // Enums ------------------------------------------------------------------------------------------
 
 template <typename E, std::size_t N>
@@ -177,392 +141,115 @@ std::string enumName(E value, const std::pair<E, const char*> (&names)[N]) {
 }
 
 template <typename E, std::size_t N>
-E enumValue(const json& j, const char* fieldName, const std::pair<E, const char*> (&names)[N]) {
-  const std::string text = getString(j, fieldName);
+E enumValue(const json& j, const std::pair<E, const char*> (&names)[N]) {
+  if (!j.is_string()) throw Malformed(std::string("expected a string, got ") + j.type_name());
+  const std::string text = j.get<std::string>();
   for (const auto& [e, name] : names) {
     if (text == name) return e;
   }
   std::string allowed;
   for (const auto& entry : names)
     allowed += std::string(allowed.empty() ? "" : ", ") + entry.second;
-  throw Malformed(std::string(fieldName) + ": '" + text + "' is not one of " + allowed);
+  throw Malformed("'" + text + "' is not one of " + allowed);
 }
 
-constexpr std::pair<SpringType, const char*> kSpringTypes[] = {
-    {SpringType::Structural, "structural"},
-    {SpringType::Shear, "shear"},
-    {SpringType::Bending, "bending"},
-    {SpringType::Other, "other"}};
-constexpr std::pair<ShapeData::Kind, const char*> kShapeKinds[] = {
-    {ShapeData::Kind::Circle, "circle"},
-    {ShapeData::Kind::Polygon, "polygon"},
-    {ShapeData::Kind::Edge, "edge"}};
-constexpr std::pair<harness::DragEvent::Kind, const char*> kDragKinds[] = {
-    {harness::DragEvent::Kind::Begin, "begin"},
-    {harness::DragEvent::Kind::Move, "move"},
-    {harness::DragEvent::Kind::End, "end"}};
+// Any listed type (wire_fields.h) and what its fields hold ------------------------------------
 
-// The framework's types
-// ----------------------------------------------------------------------------
+// Whether T has a field list.
+template <typename T, typename = void>
+struct Listed : std::false_type {};
+template <typename T>
+struct Listed<T, std::void_t<decltype(fields(std::declval<int&>(), std::declval<T&>()))>>
+    : std::true_type {};
 
-json enc(const Particle& p) {
-  return {{"x", vec(p.x)},
-          {"v", vec(p.v)},
-          {"f", vec(p.f)},
-          {"m", encodeDouble(p.m)},
-          {"pinned", p.pinned},
-          {"temperature", encodeDouble(p.temperature)},
-          {"age", encodeDouble(p.age)},
-          {"lifetime", encodeDouble(p.lifetime)}};
+json encodeValue(double x) { return encodeDouble(x); }
+json encodeValue(int x) { return x; }
+json encodeValue(std::uint64_t x) { return x; }
+json encodeValue(bool x) { return x; }
+json encodeValue(const std::string& x) { return x; }
+json encodeValue(const Vec2& x) { return vec(x); }
+template <typename E, std::enable_if_t<std::is_enum_v<E>, int> = 0>
+json encodeValue(E x) {
+  return enumName(x, namesOf(x));
 }
-Particle decParticle(const json& j) {
-  Particle p;
-  p.x = getVec(j, "x");
-  p.v = getVec(j, "v");
-  p.f = getVec(j, "f");
-  p.m = getDouble(j, "m");
-  p.pinned = getBool(j, "pinned");
-  p.temperature = getDouble(j, "temperature");
-  p.age = getDouble(j, "age");
-  p.lifetime = getDouble(j, "lifetime");
-  return p;
+template <typename T, std::enable_if_t<Listed<T>::value, int> = 0>
+json encodeValue(const T& x);
+template <typename T>
+json encodeValue(const std::vector<T>& items) {
+  return list(items, [](const T& item) { return encodeValue(item); });
 }
 
-json enc(const SpringData& s) {
-  return {{"i", s.i},
-          {"j", s.j},
-          {"restLength", encodeDouble(s.restLength)},
-          {"ks", encodeDouble(s.ks)},
-          {"kd", encodeDouble(s.kd)},
-          {"type", enumName(s.type, kSpringTypes)}};
-}
-SpringData decSpring(const json& j) {
-  SpringData s;
-  s.i = getInt(j, "i");
-  s.j = getInt(j, "j");
-  s.restLength = getDouble(j, "restLength");
-  s.ks = getDouble(j, "ks");
-  s.kd = getDouble(j, "kd");
-  s.type = enumValue(j, "type", kSpringTypes);
-  return s;
+// Writes each field it is shown into `out`.
+struct Writer {
+  json& out;
+  template <typename M>
+  void operator()(const char* name, const M& member) {
+    out[name] = encodeValue(member);
+  }
+};
+
+template <typename T, std::enable_if_t<Listed<T>::value, int>>
+json encodeValue(const T& x) {
+  json out = json::object();
+  Writer writer{out};
+  fields(writer, const_cast<T&>(x));  // the writer only reads
+  return out;
 }
 
-json enc(const HalfPlane& h) {
-  return {{"normal", vec(h.normal)}, {"offset", encodeDouble(h.offset)}};
+void decodeValue(const json& j, double& x) { x = decodeDouble(j); }
+void decodeValue(const json& j, int& x) { x = toInt(j); }
+void decodeValue(const json& j, std::uint64_t& x) {
+  if (!j.is_number_unsigned()) {
+    throw Malformed(std::string("expected an unsigned integer, got ") +
+                    (j.is_number_integer() ? std::string("a negative integer") : j.type_name()));
+  }
+  x = j.get<std::uint64_t>();
 }
-HalfPlane decPlane(const json& j) {
-  HalfPlane h;
-  h.normal = getVec(j, "normal");
-  h.offset = getDouble(j, "offset");
-  return h;
+void decodeValue(const json& j, bool& x) {
+  if (!j.is_boolean()) throw Malformed(std::string("expected true or false, got ") + j.type_name());
+  x = j.get<bool>();
 }
-
-json enc(const CircleObstacle& c) {
-  return {{"center", vec(c.center)}, {"radius", encodeDouble(c.radius)}};
+void decodeValue(const json& j, std::string& x) {
+  if (!j.is_string()) throw Malformed(std::string("expected a string, got ") + j.type_name());
+  x = j.get<std::string>();
 }
-CircleObstacle decCircle(const json& j) {
-  CircleObstacle c;
-  c.center = getVec(j, "center");
-  c.radius = getDouble(j, "radius");
-  return c;
+void decodeValue(const json& j, Vec2& x) { x = toVec(j); }
+template <typename E, std::enable_if_t<std::is_enum_v<E>, int> = 0>
+void decodeValue(const json& j, E& x) {
+  x = enumValue(j, namesOf(x));
 }
-
-json enc(const Contact& c) { return {{"depth", encodeDouble(c.depth)}, {"normal", vec(c.normal)}}; }
-Contact decContact(const json& j) {
-  Contact c;
-  c.depth = getDouble(j, "depth");
-  c.normal = getVec(j, "normal");
-  return c;
-}
-
-json enc(const Environment& e) {
-  return {{"gravity", vec(e.gravity)},
-          {"airTemperature", encodeDouble(e.airTemperature)},
-          {"buoyancy", encodeDouble(e.buoyancy)},
-          {"drag", encodeDouble(e.drag)},
-          {"repulsion", encodeDouble(e.repulsion)},
-          {"planes", list(e.planes, [](const HalfPlane& h) { return enc(h); })},
-          {"circles", list(e.circles, [](const CircleObstacle& c) { return enc(c); })}};
-}
-Environment decEnvironment(const json& j) {
-  Environment e;
-  e.gravity = getVec(j, "gravity");
-  e.airTemperature = getDouble(j, "airTemperature");
-  e.buoyancy = getDouble(j, "buoyancy");
-  e.drag = getDouble(j, "drag");
-  e.repulsion = getDouble(j, "repulsion");
-  e.planes = getList(j, "planes", decPlane);
-  e.circles = getList(j, "circles", decCircle);
-  return e;
+template <typename T, std::enable_if_t<Listed<T>::value, int> = 0>
+void decodeValue(const json& j, T& x);
+template <typename T>
+void decodeValue(const json& j, std::vector<T>& items) {
+  items = toList(j, [](const json& e) {
+    T item{};
+    decodeValue(e, item);
+    return item;
+  });
 }
 
-json enc(const ClothSpec& s) {
-  return {{"n", s.n},
-          {"size", encodeDouble(s.size)},
-          {"origin", vec(s.origin)},
-          {"particleMass", encodeDouble(s.particleMass)},
-          {"ksStructural", encodeDouble(s.ksStructural)},
-          {"kdStructural", encodeDouble(s.kdStructural)},
-          {"shear", s.shear},
-          {"ksShear", encodeDouble(s.ksShear)},
-          {"kdShear", encodeDouble(s.kdShear)},
-          {"bending", s.bending},
-          {"ksBending", encodeDouble(s.ksBending)},
-          {"kdBending", encodeDouble(s.kdBending)},
-          {"pinTopCorners", s.pinTopCorners}};
-}
-ClothSpec decClothSpec(const json& j) {
-  ClothSpec s;
-  s.n = getInt(j, "n");
-  s.size = getDouble(j, "size");
-  s.origin = getVec(j, "origin");
-  s.particleMass = getDouble(j, "particleMass");
-  s.ksStructural = getDouble(j, "ksStructural");
-  s.kdStructural = getDouble(j, "kdStructural");
-  s.shear = getBool(j, "shear");
-  s.ksShear = getDouble(j, "ksShear");
-  s.kdShear = getDouble(j, "kdShear");
-  s.bending = getBool(j, "bending");
-  s.ksBending = getDouble(j, "ksBending");
-  s.kdBending = getDouble(j, "kdBending");
-  s.pinTopCorners = getBool(j, "pinTopCorners");
-  return s;
+// Reads each field it is shown from `in`; a missing or malformed one throws Malformed, named.
+struct Reader {
+  const json& in;
+  template <typename M>
+  void operator()(const char* name, M& member) {
+    const json& value = field(in, name);
+    within(name, [&] { decodeValue(value, member); });
+  }
+};
+
+template <typename T, std::enable_if_t<Listed<T>::value, int>>
+void decodeValue(const json& j, T& x) {
+  Reader reader{j};
+  fields(reader, x);
 }
 
-json enc(const EmitterSpec& s) {
-  return {{"position", vec(s.position)},
-          {"radius", encodeDouble(s.radius)},
-          {"velocity", vec(s.velocity)},
-          {"velocitySpread", encodeDouble(s.velocitySpread)},
-          {"mass", encodeDouble(s.mass)},
-          {"temperatureMin", encodeDouble(s.temperatureMin)},
-          {"temperatureMax", encodeDouble(s.temperatureMax)},
-          {"lifetimeMin", encodeDouble(s.lifetimeMin)},
-          {"lifetimeMax", encodeDouble(s.lifetimeMax)},
-          {"rate", encodeDouble(s.rate)}};
-}
-EmitterSpec decEmitter(const json& j) {
-  EmitterSpec s;
-  s.position = getVec(j, "position");
-  s.radius = getDouble(j, "radius");
-  s.velocity = getVec(j, "velocity");
-  s.velocitySpread = getDouble(j, "velocitySpread");
-  s.mass = getDouble(j, "mass");
-  s.temperatureMin = getDouble(j, "temperatureMin");
-  s.temperatureMax = getDouble(j, "temperatureMax");
-  s.lifetimeMin = getDouble(j, "lifetimeMin");
-  s.lifetimeMax = getDouble(j, "lifetimeMax");
-  s.rate = getDouble(j, "rate");
-  return s;
-}
-
-json enc(const SceneParams& p) {
-  return {{"ks", encodeDouble(p.ks)},     {"kd", encodeDouble(p.kd)},
-          {"substeps", p.substeps},       {"n", p.n},
-          {"dt", encodeDouble(p.dt)},     {"gravity", encodeDouble(p.gravity)},
-          {"drag", encodeDouble(p.drag)}, {"buoyancy", encodeDouble(p.buoyancy)},
-          {"structural", p.structural},   {"shear", p.shear},
-          {"bending", p.bending},         {"seed", p.seed}};
-}
-SceneParams decSceneParams(const json& j) {
-  SceneParams p;
-  p.ks = getDouble(j, "ks");
-  p.kd = getDouble(j, "kd");
-  p.substeps = getInt(j, "substeps");
-  p.n = getInt(j, "n");
-  p.dt = getDouble(j, "dt");
-  p.gravity = getDouble(j, "gravity");
-  p.drag = getDouble(j, "drag");
-  p.buoyancy = getDouble(j, "buoyancy");
-  p.structural = getBool(j, "structural");
-  p.shear = getBool(j, "shear");
-  p.bending = getBool(j, "bending");
-  p.seed = getUint64(j, "seed");
-  return p;
-}
-
-json enc(const ShapeData& s) {
-  return {{"kind", enumName(s.kind, kShapeKinds)},
-          {"body", s.body},
-          {"points", list(s.points, [](const Vec2& v) { return vec(v); })},
-          {"center", vec(s.center)},
-          {"radius", encodeDouble(s.radius)},
-          {"angle", encodeDouble(s.angle)}};
-}
-ShapeData decShape(const json& j) {
-  ShapeData s;
-  s.kind = enumValue(j, "kind", kShapeKinds);
-  s.body = getInt(j, "body");
-  s.points = getList(j, "points", toVec);
-  s.center = getVec(j, "center");
-  s.radius = getDouble(j, "radius");
-  s.angle = getDouble(j, "angle");
-  return s;
-}
-
-json enc(const JointData& d) {
-  return {{"type", d.type},
-          {"anchorA", vec(d.anchorA)},
-          {"anchorB", vec(d.anchorB)},
-          {"centerA", vec(d.centerA)},
-          {"centerB", vec(d.centerB)},
-          {"groundA", d.groundA},
-          {"groundB", d.groundB}};
-}
-JointData decJointData(const json& j) {
-  JointData d;
-  d.type = getString(j, "type");
-  d.anchorA = getVec(j, "anchorA");
-  d.anchorB = getVec(j, "anchorB");
-  d.centerA = getVec(j, "centerA");
-  d.centerB = getVec(j, "centerB");
-  d.groundA = getBool(j, "groundA");
-  d.groundB = getBool(j, "groundB");
-  return d;
-}
-
-json enc(const View& v) { return {{"center", vec(v.center)}, {"height", encodeDouble(v.height)}}; }
-View decView(const json& j) {
-  View v;
-  v.center = getVec(j, "center");
-  v.height = getDouble(j, "height");
-  return v;
-}
-
-json enc(const Snapshot& s) {
-  return {{"scene", s.scene},
-          {"time", encodeDouble(s.time)},
-          {"particles", list(s.particles, [](const Particle& p) { return enc(p); })},
-          {"particleRadius", encodeDouble(s.particleRadius)},
-          {"springs", list(s.springs, [](const SpringData& d) { return enc(d); })},
-          {"planes", list(s.planes, [](const HalfPlane& h) { return enc(h); })},
-          {"circles", list(s.circles, [](const CircleObstacle& c) { return enc(c); })},
-          {"shapes", list(s.shapes, [](const ShapeData& d) { return enc(d); })},
-          {"joints", list(s.joints, [](const JointData& d) { return enc(d); })},
-          {"view", enc(s.view)}};
-}
-Snapshot decSnapshot(const json& j) {
-  Snapshot s;
-  s.scene = getString(j, "scene");
-  s.time = getDouble(j, "time");
-  s.particles = getList(j, "particles", decParticle);
-  s.particleRadius = getDouble(j, "particleRadius");
-  s.springs = getList(j, "springs", decSpring);
-  s.planes = getList(j, "planes", decPlane);
-  s.circles = getList(j, "circles", decCircle);
-  s.shapes = getList(j, "shapes", decShape);
-  s.joints = getList(j, "joints", decJointData);
-  s.view = member(j, "view", decView);
-  return s;
-}
-
-// The harness's types
-// --------------------------------------------------------------------------------
-
-json enc(const harness::DragEvent& e) {
-  return {{"kind", enumName(e.kind, kDragKinds)}, {"step", e.step}, {"target", vec(e.target)}};
-}
-harness::DragEvent decDrag(const json& j) {
-  harness::DragEvent e;
-  e.kind = enumValue(j, "kind", kDragKinds);
-  e.step = getInt(j, "step");
-  e.target = getVec(j, "target");
-  return e;
-}
-
-json enc(const harness::BodyPose& p) {
-  return {{"position", vec(p.position)},
-          {"angle", encodeDouble(p.angle)},
-          {"velocity", vec(p.velocity)},
-          {"angularVelocity", encodeDouble(p.angularVelocity)},
-          {"awake", p.awake}};
-}
-harness::BodyPose decPose(const json& j) {
-  harness::BodyPose p;
-  p.position = getVec(j, "position");
-  p.angle = getDouble(j, "angle");
-  p.velocity = getVec(j, "velocity");
-  p.angularVelocity = getDouble(j, "angularVelocity");
-  p.awake = getBool(j, "awake");
-  return p;
-}
-
-json enc(const harness::BodyInfo& b) {
-  return {{"name", b.name},
-          {"mass", encodeDouble(b.mass)},
-          {"inertia", encodeDouble(b.inertia)},
-          {"localCenter", vec(b.localCenter)}};
-}
-harness::BodyInfo decBody(const json& j) {
-  harness::BodyInfo b;
-  b.name = getString(j, "name");
-  b.mass = getDouble(j, "mass");
-  b.inertia = getDouble(j, "inertia");
-  b.localCenter = getVec(j, "localCenter");
-  return b;
-}
-
-json enc(const harness::JointInfo& i) {
-  return {{"type", i.type},
-          {"bodyA", i.bodyA},
-          {"bodyB", i.bodyB},
-          {"anchorA", vec(i.anchorA)},
-          {"anchorB", vec(i.anchorB)},
-          {"localAnchorA", vec(i.localAnchorA)},
-          {"localAnchorB", vec(i.localAnchorB)},
-          {"localAxisA", vec(i.localAxisA)},
-          {"collideConnected", i.collideConnected},
-          {"enableLimit", i.enableLimit},
-          {"lower", encodeDouble(i.lower)},
-          {"upper", encodeDouble(i.upper)},
-          {"enableMotor", i.enableMotor},
-          {"motorSpeed", encodeDouble(i.motorSpeed)},
-          {"maxMotor", encodeDouble(i.maxMotor)},
-          {"length", encodeDouble(i.length)},
-          {"minLength", encodeDouble(i.minLength)},
-          {"maxLength", encodeDouble(i.maxLength)},
-          {"stiffness", encodeDouble(i.stiffness)},
-          {"damping", encodeDouble(i.damping)},
-          {"maxForce", encodeDouble(i.maxForce)},
-          {"target", vec(i.target)},
-          {"reactionForce", vec(i.reactionForce)}};
-}
-harness::JointInfo decJoint(const json& j) {
-  harness::JointInfo i;
-  i.type = getString(j, "type");
-  i.bodyA = getInt(j, "bodyA");
-  i.bodyB = getInt(j, "bodyB");
-  i.anchorA = getVec(j, "anchorA");
-  i.anchorB = getVec(j, "anchorB");
-  i.localAnchorA = getVec(j, "localAnchorA");
-  i.localAnchorB = getVec(j, "localAnchorB");
-  i.localAxisA = getVec(j, "localAxisA");
-  i.collideConnected = getBool(j, "collideConnected");
-  i.enableLimit = getBool(j, "enableLimit");
-  i.lower = getDouble(j, "lower");
-  i.upper = getDouble(j, "upper");
-  i.enableMotor = getBool(j, "enableMotor");
-  i.motorSpeed = getDouble(j, "motorSpeed");
-  i.maxMotor = getDouble(j, "maxMotor");
-  i.length = getDouble(j, "length");
-  i.minLength = getDouble(j, "minLength");
-  i.maxLength = getDouble(j, "maxLength");
-  i.stiffness = getDouble(j, "stiffness");
-  i.damping = getDouble(j, "damping");
-  i.maxForce = getDouble(j, "maxForce");
-  i.target = getVec(j, "target");
-  i.reactionForce = getVec(j, "reactionForce");
-  return i;
-}
-
-json encParticles(const std::vector<Particle>& ps) {
-  return list(ps, [](const Particle& p) { return enc(p); });
-}
-json encSprings(const std::vector<SpringData>& ss) {
-  return list(ss, [](const SpringData& s) { return enc(s); });
-}
-json encJoints(const std::vector<harness::JointInfo>& js) {
-  return list(js, [](const harness::JointInfo& i) { return enc(i); });
+template <typename T>
+T decodeAsValue(const json& j) {
+  T x{};
+  decodeValue(j, x);
+  return x;
 }
 
 json request(const char* kind, json body) { return {{"kind", kind}, {"body", std::move(body)}}; }
@@ -649,266 +336,102 @@ double decodeDouble(const json& j) {
 
 // Requests ---------------------------------------------------------------------------------------
 
-json encodeSpringForce(const harness::SpringForceRequest& r) {
-  return request("springForce", {{"p1", enc(r.p1)},
-                                 {"p2", enc(r.p2)},
-                                 {"restLength", encodeDouble(r.restLength)},
-                                 {"ks", encodeDouble(r.ks)},
-                                 {"kd", encodeDouble(r.kd)}});
+namespace {
+
+template <typename T>
+T decodeBody(const char* what, const json& j) {
+  return decodeAs(what, [&] { return decodeAsValue<T>(j); });
 }
-harness::SpringForceRequest decodeSpringForceRequest(const json& j) {
-  return decodeAs("SpringForceRequest", [&] {
-    harness::SpringForceRequest r;
-    r.p1 = member(j, "p1", decParticle);
-    r.p2 = member(j, "p2", decParticle);
-    r.restLength = getDouble(j, "restLength");
-    r.ks = getDouble(j, "ks");
-    r.kd = getDouble(j, "kd");
+
+// A result: its outcome, then its fields (an error alone is a whole result).
+template <typename Result>
+json encodeOutcomeAnd(const Result& r) {
+  json out = encodeValue(r);
+  out["error"] = r.error;
+  out["fault"] = faultName(r.fault);
+  return out;
+}
+template <typename Result>
+Result decodeResult(const char* what, const json& j) {
+  return decodeAs(what, [&] {
+    Result r;
+    if (startResult(j, r)) return r;
+    Reader reader{j};
+    fields(reader, r);
     return r;
   });
 }
 
-json encodeForces(const harness::ForcesRequest& r) {
-  return request("forces",
-                 {{"particle", enc(r.particle)}, {"env", enc(r.env)}, {"contact", enc(r.contact)}});
+}  // namespace
+
+json encodeSpringForce(const harness::SpringForceRequest& r) {
+  return request("springForce", encodeValue(r));
+}
+json encodeForces(const harness::ForcesRequest& r) { return request("forces", encodeValue(r)); }
+json encodeSimulate(const harness::SimulateRequest& r) {
+  return request("simulate", encodeValue(r));
+}
+json encodeBuildCloth(const ClothSpec& spec) { return request("buildCloth", encodeValue(spec)); }
+json encodeEmit(const harness::EmitRequest& r) { return request("emit", encodeValue(r)); }
+json encodeRunParticles(const harness::ParticleRunRequest& r) {
+  return request("runParticles", encodeValue(r));
+}
+json encodeRunBox2D(const harness::Box2DRequest& r) { return request("runBox2D", encodeValue(r)); }
+json encodeRunScene(const harness::SceneRequest& r) { return request("runScene", encodeValue(r)); }
+
+harness::SpringForceRequest decodeSpringForceRequest(const json& j) {
+  return decodeBody<harness::SpringForceRequest>("SpringForceRequest", j);
 }
 harness::ForcesRequest decodeForcesRequest(const json& j) {
-  return decodeAs("ForcesRequest", [&] {
-    harness::ForcesRequest r;
-    r.particle = member(j, "particle", decParticle);
-    r.env = member(j, "env", decEnvironment);
-    r.contact = member(j, "contact", decContact);
-    return r;
-  });
-}
-
-json encodeSimulate(const harness::SimulateRequest& r) {
-  return request("simulate", {{"particles", encParticles(r.particles)},
-                              {"springs", encSprings(r.springs)},
-                              {"env", enc(r.env)},
-                              {"frameDt", encodeDouble(r.frameDt)},
-                              {"substeps", r.substeps},
-                              {"stepOnly", r.stepOnly},
-                              {"frames", r.frames},
-                              {"recordEvery", r.recordEvery},
-                              {"referenceForces", r.referenceForces}});
+  return decodeBody<harness::ForcesRequest>("ForcesRequest", j);
 }
 harness::SimulateRequest decodeSimulateRequest(const json& j) {
-  return decodeAs("SimulateRequest", [&] {
-    harness::SimulateRequest r;
-    r.particles = getList(j, "particles", decParticle);
-    r.springs = getList(j, "springs", decSpring);
-    r.env = member(j, "env", decEnvironment);
-    r.frameDt = getDouble(j, "frameDt");
-    r.substeps = getInt(j, "substeps");
-    r.stepOnly = getBool(j, "stepOnly");
-    r.frames = getInt(j, "frames");
-    r.recordEvery = getInt(j, "recordEvery");
-    r.referenceForces = getBool(j, "referenceForces");
-    return r;
-  });
+  return decodeBody<harness::SimulateRequest>("SimulateRequest", j);
 }
-
-json encodeBuildCloth(const ClothSpec& spec) { return request("buildCloth", enc(spec)); }
-ClothSpec decodeBuildClothRequest(const json& j) {
-  return decodeAs("ClothSpec", [&] { return decClothSpec(j); });
-}
-
-json encodeEmit(const harness::EmitRequest& r) {
-  return request("emit", {{"spec", enc(r.spec)}, {"seed", r.seed}, {"count", r.count}});
-}
+ClothSpec decodeBuildClothRequest(const json& j) { return decodeBody<ClothSpec>("ClothSpec", j); }
 harness::EmitRequest decodeEmitRequest(const json& j) {
-  return decodeAs("EmitRequest", [&] {
-    harness::EmitRequest r;
-    r.spec = member(j, "spec", decEmitter);
-    r.seed = getUint64(j, "seed");
-    r.count = getInt(j, "count");
-    return r;
-  });
-}
-
-json encodeRunParticles(const harness::ParticleRunRequest& r) {
-  return request("runParticles", {{"emitter", enc(r.emitter)},
-                                  {"env", enc(r.env)},
-                                  {"coolingRate", encodeDouble(r.coolingRate)},
-                                  {"seed", r.seed},
-                                  {"initial", encParticles(r.initial)},
-                                  {"dt", encodeDouble(r.dt)},
-                                  {"steps", r.steps},
-                                  {"referenceForces", r.referenceForces}});
+  return decodeBody<harness::EmitRequest>("EmitRequest", j);
 }
 harness::ParticleRunRequest decodeRunParticlesRequest(const json& j) {
-  return decodeAs("ParticleRunRequest", [&] {
-    harness::ParticleRunRequest r;
-    r.emitter = member(j, "emitter", decEmitter);
-    r.env = member(j, "env", decEnvironment);
-    r.coolingRate = getDouble(j, "coolingRate");
-    r.seed = getUint64(j, "seed");
-    r.initial = getList(j, "initial", decParticle);
-    r.dt = getDouble(j, "dt");
-    r.steps = getInt(j, "steps");
-    r.referenceForces = getBool(j, "referenceForces");
-    return r;
-  });
-}
-
-json encodeRunBox2D(const harness::Box2DRequest& r) {
-  return request("runBox2D",
-                 {{"scene", r.scene},
-                  {"steps", r.steps},
-                  {"drag", list(r.drag, [](const harness::DragEvent& e) { return enc(e); })}});
+  return decodeBody<harness::ParticleRunRequest>("ParticleRunRequest", j);
 }
 harness::Box2DRequest decodeRunBox2DRequest(const json& j) {
-  return decodeAs("Box2DRequest", [&] {
-    harness::Box2DRequest r;
-    r.scene = getString(j, "scene");
-    r.steps = getInt(j, "steps");
-    r.drag = getList(j, "drag", decDrag);
-    return r;
-  });
-}
-
-json encodeRunScene(const harness::SceneRequest& r) {
-  return request("runScene", {{"scene", r.scene},
-                              {"frames", ints(r.frames)},
-                              {"useDefaults", r.useDefaults},
-                              {"params", enc(r.params)}});
+  return decodeBody<harness::Box2DRequest>("Box2DRequest", j);
 }
 harness::SceneRequest decodeRunSceneRequest(const json& j) {
-  return decodeAs("SceneRequest", [&] {
-    harness::SceneRequest r;
-    r.scene = getString(j, "scene");
-    r.frames = member(j, "frames", toInts);
-    r.useDefaults = getBool(j, "useDefaults");
-    r.params = member(j, "params", decSceneParams);
-    return r;
-  });
+  return decodeBody<harness::SceneRequest>("SceneRequest", j);
 }
 
-// Results
-// ------------------------------------------------------------------------------------------
+// Results ----------------------------------------------------------------------------------------
 
-json encodeResult(const harness::SpringForceResult& r) {
-  return {{"error", r.error}, {"fault", faultName(r.fault)}, {"force", vec(r.force)}};
-}
+json encodeResult(const harness::SpringForceResult& r) { return encodeOutcomeAnd(r); }
+json encodeResult(const harness::ForcesResult& r) { return encodeOutcomeAnd(r); }
+json encodeResult(const harness::SimulateResult& r) { return encodeOutcomeAnd(r); }
+json encodeResult(const harness::ClothResult& r) { return encodeOutcomeAnd(r); }
+json encodeResult(const harness::ParticlesResult& r) { return encodeOutcomeAnd(r); }
+json encodeResult(const harness::Box2DResult& r) { return encodeOutcomeAnd(r); }
+json encodeResult(const harness::SceneResult& r) { return encodeOutcomeAnd(r); }
+
 harness::SpringForceResult decodeSpringForce(const json& j) {
-  return decodeAs("SpringForceResult", [&] {
-    harness::SpringForceResult r;
-    if (startResult(j, r)) return r;
-    r.force = getVec(j, "force");
-    return r;
-  });
-}
-
-json encodeResult(const harness::ForcesResult& r) {
-  return {{"error", r.error},          {"fault", faultName(r.fault)},
-          {"gravity", vec(r.gravity)}, {"buoyancy", vec(r.buoyancy)},
-          {"drag", vec(r.drag)},       {"repulsion", vec(r.repulsion)},
-          {"total", vec(r.total)}};
+  return decodeResult<harness::SpringForceResult>("SpringForceResult", j);
 }
 harness::ForcesResult decodeForces(const json& j) {
-  return decodeAs("ForcesResult", [&] {
-    harness::ForcesResult r;
-    if (startResult(j, r)) return r;
-    r.gravity = getVec(j, "gravity");
-    r.buoyancy = getVec(j, "buoyancy");
-    r.drag = getVec(j, "drag");
-    r.repulsion = getVec(j, "repulsion");
-    r.total = getVec(j, "total");
-    return r;
-  });
-}
-
-json encodeResult(const harness::SimulateResult& r) {
-  return {
-      {"error", r.error},
-      {"fault", faultName(r.fault)},
-      {"recordedFrames", ints(r.recordedFrames)},
-      {"states", list(r.states, [](const std::vector<Particle>& s) { return encParticles(s); })}};
+  return decodeResult<harness::ForcesResult>("ForcesResult", j);
 }
 harness::SimulateResult decodeSimulate(const json& j) {
-  return decodeAs("SimulateResult", [&] {
-    harness::SimulateResult r;
-    if (startResult(j, r)) return r;
-    r.recordedFrames = member(j, "recordedFrames", toInts);
-    r.states = getList(j, "states", [](const json& s) { return toList(s, decParticle); });
-    return r;
-  });
-}
-
-json encodeResult(const harness::ClothResult& r) {
-  return {{"error", r.error},
-          {"fault", faultName(r.fault)},
-          {"particles", encParticles(r.particles)},
-          {"springs", encSprings(r.springs)}};
+  return decodeResult<harness::SimulateResult>("SimulateResult", j);
 }
 harness::ClothResult decodeBuildCloth(const json& j) {
-  return decodeAs("ClothResult", [&] {
-    harness::ClothResult r;
-    if (startResult(j, r)) return r;
-    r.particles = getList(j, "particles", decParticle);
-    r.springs = getList(j, "springs", decSpring);
-    return r;
-  });
-}
-
-json encodeResult(const harness::ParticlesResult& r) {
-  return {{"error", r.error},
-          {"fault", faultName(r.fault)},
-          {"particles", encParticles(r.particles)},
-          {"counts", ints(r.counts)}};
+  return decodeResult<harness::ClothResult>("ClothResult", j);
 }
 harness::ParticlesResult decodeParticles(const json& j) {
-  return decodeAs("ParticlesResult", [&] {
-    harness::ParticlesResult r;
-    if (startResult(j, r)) return r;
-    r.particles = getList(j, "particles", decParticle);
-    r.counts = member(j, "counts", toInts);
-    return r;
-  });
-}
-
-json encodeResult(const harness::Box2DResult& r) {
-  return {{"error", r.error},
-          {"fault", faultName(r.fault)},
-          {"bodies", list(r.bodies, [](const harness::BodyInfo& b) { return enc(b); })},
-          {"poses", list(r.poses,
-                         [](const std::vector<harness::BodyPose>& step) {
-                           return list(step, [](const harness::BodyPose& p) { return enc(p); });
-                         })},
-          {"joints", encJoints(r.joints)},
-          {"builtJoints", encJoints(r.builtJoints)},
-          {"jointCounts", ints(r.jointCounts)},
-          {"dragJoints", encJoints(r.dragJoints)},
-          {"endDragCleared", ints(r.endDragCleared)}};
+  return decodeResult<harness::ParticlesResult>("ParticlesResult", j);
 }
 harness::Box2DResult decodeRunBox2D(const json& j) {
-  return decodeAs("Box2DResult", [&] {
-    harness::Box2DResult r;
-    if (startResult(j, r)) return r;
-    r.bodies = getList(j, "bodies", decBody);
-    r.poses = getList(j, "poses", [](const json& step) { return toList(step, decPose); });
-    r.joints = getList(j, "joints", decJoint);
-    r.builtJoints = getList(j, "builtJoints", decJoint);
-    r.jointCounts = member(j, "jointCounts", toInts);
-    r.dragJoints = getList(j, "dragJoints", decJoint);
-    r.endDragCleared = member(j, "endDragCleared", toInts);
-    return r;
-  });
-}
-
-json encodeResult(const harness::SceneResult& r) {
-  return {{"error", r.error},
-          {"fault", faultName(r.fault)},
-          {"snapshots", list(r.snapshots, [](const Snapshot& s) { return enc(s); })}};
+  return decodeResult<harness::Box2DResult>("Box2DResult", j);
 }
 harness::SceneResult decodeRunScene(const json& j) {
-  return decodeAs("SceneResult", [&] {
-    harness::SceneResult r;
-    if (startResult(j, r)) return r;
-    r.snapshots = getList(j, "snapshots", decSnapshot);
-    return r;
-  });
+  return decodeResult<harness::SceneResult>("SceneResult", j);
 }
 
 // Serving
