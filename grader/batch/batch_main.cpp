@@ -80,6 +80,7 @@ using namespace a6::grader::batch;
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using a6::grader::process::secondsSince;
 
 constexpr double kDefaultTimeout = 900;  // s per submission: a6_grade's own budget is 420 s
 constexpr const char* kMarker = "batch.json";
@@ -125,10 +126,6 @@ std::string rubricProblems(const fs::path& grader, const fs::path& rubric) {
   if (pid < 0 || waitpid(pid, &status, 0) != pid) return "cannot run " + grader.string();
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
   return said.empty() ? grader.string() + " --check-rubric failed" : said;
-}
-
-double secondsSince(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
 std::string oneDecimal(double x) {

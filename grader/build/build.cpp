@@ -37,15 +37,14 @@
 #include <system_error>
 #include <thread>
 
+#include "sandbox/process.h"
+
 namespace a6::grader {
 namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using process::secondsSince;
 
 fs::path absoluteClean(const fs::path& p) {
   std::error_code ec;

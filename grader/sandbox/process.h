@@ -21,11 +21,17 @@
 
 #include <sys/types.h>
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace a6::grader::process {
+
+/// Seconds of the steady clock since `t` (every stage's timings).
+inline double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
 
 /// One process, as /proc/PID/status describes it.
 struct Info {

@@ -36,16 +36,15 @@
 #include <sstream>
 #include <thread>
 
+#include "sandbox/process.h"
+
 namespace a6::grader {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+using process::secondsSince;
 
 namespace {
-
-double secondsSince(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 std::string errnoText(int err) { return std::strerror(err); }
 
@@ -206,161 +205,226 @@ void closeRange(int lo, int hi, int maxFd) {
   for (int fd = lo; fd <= std::min(hi, maxFd); ++fd) ::close(fd);
 }
 
-// The child, between fork and execve: system calls only, no allocation.
-[[noreturn]] void childMain(Plan& p) {
-  int statusFd = p.statusFd;
-  auto report = [&](bool fatal, Stage stage, int err, int index) {
+// The child, between fork and execve: system calls only, no allocation. Its set-up is a list of
+// small named steps (childMain, at the end); a fatal step reports its stage and errno on the
+// status pipe and exits 127, a step that only weakens the sandbox reports and goes on.
+class Child {
+ public:
+  explicit Child(Plan& plan) : p_(plan), statusFd_(plan.statusFd) {}
+
+  void report(bool fatal, Stage stage, int err, int index) {
     const Record r{fatal ? 1 : 0, stage, err, index};
-    ssize_t ignored = ::write(statusFd, &r, sizeof r);
+    ssize_t ignored = ::write(statusFd_, &r, sizeof r);
     (void)ignored;
-  };
-  auto die = [&](Stage stage, int index = -1) {
+  }
+  [[noreturn]] void die(Stage stage, int index = -1) {
     report(true, stage, errno, index);
     _exit(127);
-  };
+  }
 
-  if (setsid() < 0) die(kSetsid);
+  void newSession() {
+    if (setsid() < 0) die(kSetsid);
+  }
 
-  // Namespaces: the grader's files out of sight, then no network.
-  if (p.root) {
-    if (!p.ops.empty() || !p.workTmpfs.empty()) {
-      if (unshare(CLONE_NEWNS) != 0) {
-        report(false, kUnshareMounts, errno, -1);
-      } else if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) {
-        report(false, kMountPrivate, errno, -1);
+  // The grader's files out of sight (as root, when there is anything to hide or a work tmpfs).
+  void hideTheMachine() {
+    if (!p_.root || (p_.ops.empty() && p_.workTmpfs.empty())) return;
+    if (unshare(CLONE_NEWNS) != 0) return report(false, kUnshareMounts, errno, -1);
+    if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) {
+      return report(false, kMountPrivate, errno, -1);
+    }
+    openBeforeCovering();
+    for (std::size_t k = 0; k < p_.ops.size(); ++k) {
+      if (p_.ops[k].kind == MountOp::Reveal) {
+        reveal(p_.ops[k], static_cast<int>(k));
       } else {
-        // /dev/null, what covers a hidden file, opened before /dev itself may be covered.
-        char nullSource[32] = "/dev/null";
-        const int nullPath = ::open("/dev/null", O_PATH | O_CLOEXEC);
-        if (nullPath >= 0) procFdPath(nullPath, nullSource);
-        // Everything to reveal, opened before anything is covered.
-        for (std::size_t k = 0; k < p.ops.size(); ++k) {
-          MountOp& op = p.ops[k];
-          if (op.kind != MountOp::Reveal) continue;
-          op.fd = ::open(op.path.c_str(), O_PATH | O_CLOEXEC);
-          if (op.fd < 0) die(kReveal, static_cast<int>(k));
-          procFdPath(op.fd, op.source);
-        }
-        for (std::size_t k = 0; k < p.ops.size(); ++k) {
-          const MountOp& op = p.ops[k];
-          const int index = static_cast<int>(k);
-          struct stat st;
-          if (op.kind != MountOp::Reveal) {
-            if (lstat(op.path.c_str(), &st) != 0) continue;  // already under a hidden folder
-            int rc;
-            if (op.kind == MountOp::HideDir) {
-              rc = mount("a6-hidden", op.path.c_str(), "tmpfs", MS_NOSUID | MS_NODEV | MS_NOEXEC,
-                         "size=64k,mode=755");
-            } else {
-              rc = mount(nullSource, op.path.c_str(), nullptr, MS_BIND, nullptr);
-              if (rc == 0) {
-                mount(nullptr, op.path.c_str(), nullptr, MS_BIND | MS_REMOUNT | MS_RDONLY, nullptr);
-              }
-            }
-            if (rc != 0) report(false, kHide, errno, index);
-            continue;
-          }
-          // Reveal: bind the original back, unless it is still visible as it is.
-          struct stat want;
-          if (fstat(op.fd, &want) != 0) die(kReveal, index);
-          if (stat(op.path.c_str(), &st) == 0 && st.st_dev == want.st_dev &&
-              st.st_ino == want.st_ino) {
-            continue;
-          }
-          for (const std::string& dir : op.chain) {
-            if (lstat(dir.c_str(), &st) == 0) continue;
-            // Searchable by the child's user whatever the grader's umask.
-            if (errno != ENOENT || mkdir(dir.c_str(), 0755) != 0 || chmod(dir.c_str(), 0755) != 0) {
-              die(kReveal, index);
-            }
-          }
-          if (lstat(op.path.c_str(), &st) != 0) {
-            if (op.isDir) {
-              if (mkdir(op.path.c_str(), 0755) != 0) die(kReveal, index);
-            } else {
-              const int fd = ::open(op.path.c_str(), O_CREAT | O_WRONLY | O_CLOEXEC, 0644);
-              if (fd < 0) die(kReveal, index);
-              ::close(fd);
-            }
-          }
-          if (mount(op.source, op.path.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) {
-            die(kReveal, index);
-          }
-        }
-        // The work dir: a tmpfs of its own size, so that what the child writes is bounded.
-        if (!p.workTmpfs.empty() && mount("a6-work", p.workDir.c_str(), "tmpfs",
-                                          MS_NOSUID | MS_NODEV, p.workTmpfs.c_str()) != 0) {
-          die(kWorkTmpfs);
-        }
+        hide(p_.ops[k], static_cast<int>(k));
       }
     }
-    if (unshare(CLONE_NEWNET) != 0) report(false, kUnshareNet, errno, -1);
+    boundTheWorkDir();
   }
 
-  // File descriptors: every source above every target first, then into place.
-  const int devNull = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
-  if (devNull < 0) die(kDevNull);
-  statusFd = fcntl(statusFd, F_DUPFD_CLOEXEC, p.highBase);
-  if (statusFd < 0) _exit(127);
-  const int outFd = fcntl(p.outFd, F_DUPFD_CLOEXEC, p.highBase);
-  const int nullFd = fcntl(devNull, F_DUPFD_CLOEXEC, p.highBase);
-  if (outFd < 0 || nullFd < 0) die(kFds);
-  int moved[64];
-  const std::size_t count = std::min<std::size_t>(p.fds.size(), 64);
-  for (std::size_t k = 0; k < count; ++k) {
-    moved[k] = fcntl(p.fds[k].first, F_DUPFD_CLOEXEC, p.highBase);
-    if (moved[k] < 0) die(kFds, static_cast<int>(k));
+  // No network (as root).
+  void isolateNetwork() {
+    if (p_.root && unshare(CLONE_NEWNET) != 0) report(false, kUnshareNet, errno, -1);
   }
-  if (dup2(nullFd, 0) < 0 || dup2(outFd, 1) < 0 || dup2(outFd, 2) < 0) die(kFds);
-  for (std::size_t k = 0; k < count; ++k) {
-    if (dup2(moved[k], p.fds[k].second) < 0) die(kFds, static_cast<int>(k));
-  }
-  // Close everything but 0-2, the targets and the status pipe (sorted: targets < highBase).
-  int keep[66];
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < count; ++k) keep[kept++] = p.fds[k].second;
-  keep[kept++] = statusFd;
-  std::sort(keep, keep + kept);
-  int next = 3;
-  for (std::size_t k = 0; k < kept; ++k) {
-    closeRange(next, keep[k] - 1, p.maxFd);
-    next = std::max(next, keep[k] + 1);
-  }
-  closeRange(next, 0x7fffffff, p.maxFd);
 
-  if (chdir(p.workDir.c_str()) != 0) die(kChdir);
-
-  // RLIMIT_NPROC comes after the uid change: set before it, a count of the new user's tasks
-  // that other sandboxes pushed over the limit meanwhile would make execve fail (EAGAIN).
-  auto applyLimits = [&](bool processes) {
-    for (std::size_t k = 0; k < p.limits.size(); ++k) {
-      if ((p.limits[k].resource == RLIMIT_NPROC) != processes) continue;
-      const rlimit lim{p.limits[k].soft, p.limits[k].hard};
-      if (setrlimit(p.limits[k].resource, &lim) != 0) die(kRlimit, static_cast<int>(k));
+  // File descriptors: every source above every target first, then into place; the rest closed.
+  void placeFds() {
+    const int devNull = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+    if (devNull < 0) die(kDevNull);
+    statusFd_ = fcntl(statusFd_, F_DUPFD_CLOEXEC, p_.highBase);
+    if (statusFd_ < 0) _exit(127);
+    const int outFd = fcntl(p_.outFd, F_DUPFD_CLOEXEC, p_.highBase);
+    const int nullFd = fcntl(devNull, F_DUPFD_CLOEXEC, p_.highBase);
+    if (outFd < 0 || nullFd < 0) die(kFds);
+    int moved[64];
+    const std::size_t count = fdCount();
+    for (std::size_t k = 0; k < count; ++k) {
+      moved[k] = fcntl(p_.fds[k].first, F_DUPFD_CLOEXEC, p_.highBase);
+      if (moved[k] < 0) die(kFds, static_cast<int>(k));
     }
-  };
-  applyLimits(false);
-  if (p.dropPrivileges) {
-    // Raw system calls: in the child of a threaded parent, only this thread exists.
+    if (dup2(nullFd, 0) < 0 || dup2(outFd, 1) < 0 || dup2(outFd, 2) < 0) die(kFds);
+    for (std::size_t k = 0; k < count; ++k) {
+      if (dup2(moved[k], p_.fds[k].second) < 0) die(kFds, static_cast<int>(k));
+    }
+    closeTheRest();
+  }
+
+  void enterWorkDir() {
+    if (chdir(p_.workDir.c_str()) != 0) die(kChdir);
+  }
+
+  // The rlimits: RLIMIT_NPROC (`processes`) comes after the uid change: set before it, a count
+  // of the new user's tasks that other sandboxes pushed over the limit meanwhile would make
+  // execve fail (EAGAIN).
+  void applyLimits(bool processes) {
+    for (std::size_t k = 0; k < p_.limits.size(); ++k) {
+      if ((p_.limits[k].resource == RLIMIT_NPROC) != processes) continue;
+      const rlimit lim{p_.limits[k].soft, p_.limits[k].hard};
+      if (setrlimit(p_.limits[k].resource, &lim) != 0) die(kRlimit, static_cast<int>(k));
+    }
+  }
+
+  // The sandbox's user. Raw system calls: in the child of a threaded parent, only this thread
+  // exists.
+  void dropPrivileges() {
+    if (!p_.dropPrivileges) return;
     if (syscall(SYS_setgroups, 0, nullptr) != 0) die(kSetgroups);
-    if (syscall(SYS_setgid, p.gid) != 0) die(kSetgid);
-    if (syscall(SYS_setuid, p.uid) != 0) die(kSetuid);
+    if (syscall(SYS_setgid, p_.gid) != 0) die(kSetgid);
+    if (syscall(SYS_setuid, p_.uid) != 0) die(kSetuid);
   }
-  applyLimits(true);
+
   // Dies with the grader (set after the uid change, which clears it).
-  if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) die(kDeathSignal);
-  if (getppid() != p.parent) _exit(127);
-
-  if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) die(kNoNewPrivs);
-  if (!p.filter.empty()) {
-    sock_fprog prog{static_cast<unsigned short>(p.filter.size()),
-                    const_cast<sock_filter*>(p.filter.data())};
-    if (prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &prog) != 0) report(false, kSeccomp, errno, -1);
+  void dieWithTheGrader() {
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) die(kDeathSignal);
+    if (getppid() != p_.parent) _exit(127);
   }
 
-  execve(p.argv[0], p.argv.data(), p.envp.data());
-  die(kExec);
-  _exit(127);  // not reached
+  void noNewPrivileges() {
+    if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) die(kNoNewPrivs);
+  }
+
+  void installFilter() {
+    if (p_.filter.empty()) return;
+    sock_fprog prog{static_cast<unsigned short>(p_.filter.size()),
+                    const_cast<sock_filter*>(p_.filter.data())};
+    if (prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &prog) != 0) {
+      report(false, kSeccomp, errno, -1);
+    }
+  }
+
+  [[noreturn]] void exec() {
+    execve(p_.argv[0], p_.argv.data(), p_.envp.data());
+    die(kExec);
+  }
+
+ private:
+  std::size_t fdCount() const { return std::min<std::size_t>(p_.fds.size(), 64); }
+
+  // /dev/null, what covers a hidden file, and everything to reveal: opened before anything is
+  // covered.
+  void openBeforeCovering() {
+    const int nullPath = ::open("/dev/null", O_PATH | O_CLOEXEC);
+    if (nullPath >= 0) procFdPath(nullPath, nullSource_);
+    for (std::size_t k = 0; k < p_.ops.size(); ++k) {
+      MountOp& op = p_.ops[k];
+      if (op.kind != MountOp::Reveal) continue;
+      op.fd = ::open(op.path.c_str(), O_PATH | O_CLOEXEC);
+      if (op.fd < 0) die(kReveal, static_cast<int>(k));
+      procFdPath(op.fd, op.source);
+    }
+  }
+
+  // A folder covered by an empty tmpfs, a file by /dev/null (read-only).
+  void hide(const MountOp& op, int index) {
+    struct stat st;
+    if (lstat(op.path.c_str(), &st) != 0) return;  // already under a hidden folder
+    int rc;
+    if (op.kind == MountOp::HideDir) {
+      rc = mount("a6-hidden", op.path.c_str(), "tmpfs", MS_NOSUID | MS_NODEV | MS_NOEXEC,
+                 "size=64k,mode=755");
+    } else {
+      rc = mount(nullSource_, op.path.c_str(), nullptr, MS_BIND, nullptr);
+      if (rc == 0) {
+        mount(nullptr, op.path.c_str(), nullptr, MS_BIND | MS_REMOUNT | MS_RDONLY, nullptr);
+      }
+    }
+    if (rc != 0) report(false, kHide, errno, index);
+  }
+
+  // The original bound back, unless it is still visible as it is; the way to it rebuilt with
+  // folders searchable by the child's user, whatever the grader's umask.
+  void reveal(const MountOp& op, int index) {
+    struct stat st, want;
+    if (fstat(op.fd, &want) != 0) die(kReveal, index);
+    if (stat(op.path.c_str(), &st) == 0 && st.st_dev == want.st_dev && st.st_ino == want.st_ino) {
+      return;
+    }
+    for (const std::string& dir : op.chain) {
+      if (lstat(dir.c_str(), &st) == 0) continue;
+      if (errno != ENOENT || mkdir(dir.c_str(), 0755) != 0 || chmod(dir.c_str(), 0755) != 0) {
+        die(kReveal, index);
+      }
+    }
+    if (lstat(op.path.c_str(), &st) != 0) makeMountPoint(op, index);
+    if (mount(op.source, op.path.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) {
+      die(kReveal, index);
+    }
+  }
+
+  void makeMountPoint(const MountOp& op, int index) {
+    if (op.isDir) {
+      if (mkdir(op.path.c_str(), 0755) != 0) die(kReveal, index);
+      return;
+    }
+    const int fd = ::open(op.path.c_str(), O_CREAT | O_WRONLY | O_CLOEXEC, 0644);
+    if (fd < 0) die(kReveal, index);
+    ::close(fd);
+  }
+
+  // The work dir: a tmpfs of its own size, so that what the child writes is bounded.
+  void boundTheWorkDir() {
+    if (!p_.workTmpfs.empty() && mount("a6-work", p_.workDir.c_str(), "tmpfs", MS_NOSUID | MS_NODEV,
+                                       p_.workTmpfs.c_str()) != 0) {
+      die(kWorkTmpfs);
+    }
+  }
+
+  // Closes everything but 0-2, the targets and the status pipe (sorted: targets < highBase).
+  void closeTheRest() {
+    int keep[66];
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < fdCount(); ++k) keep[kept++] = p_.fds[k].second;
+    keep[kept++] = statusFd_;
+    std::sort(keep, keep + kept);
+    int next = 3;
+    for (std::size_t k = 0; k < kept; ++k) {
+      closeRange(next, keep[k] - 1, p_.maxFd);
+      next = std::max(next, keep[k] + 1);
+    }
+    closeRange(next, 0x7fffffff, p_.maxFd);
+  }
+
+  Plan& p_;
+  int statusFd_;
+  char nullSource_[32] = "/dev/null";
+};
+
+[[noreturn]] void childMain(Plan& plan) {
+  Child child(plan);
+  child.newSession();
+  child.hideTheMachine();
+  child.isolateNetwork();
+  child.placeFds();
+  child.enterWorkDir();
+  child.applyLimits(false);
+  child.dropPrivileges();
+  child.applyLimits(true);
+  child.dieWithTheGrader();
+  child.noNewPrivileges();
+  child.installFilter();
+  child.exec();
 }
 
 // The seccomp program every sandboxed child gets (default: allow) ---------------------------------
