@@ -419,162 +419,203 @@ std::unique_ptr<archive, ArchiveDeleter> openArchive(const fs::path& path, std::
   return a;
 }
 
-Intake readArchive(const fs::path& submission, const fs::path& dest, const IntakeLimits& limits) {
-  std::string openError;
-  auto a = openArchive(submission, openError);
-  if (!a) {
-    // A single task file submitted on its own (not an archive): take it as it is.
-    const std::string name = submission.filename().string();
-    if (isTaskFile(name)) {
-      Collector c(limits);
-      std::ifstream in(submission, std::ios::binary);
-      std::string data(limits.maxFileBytes + 1, '\0');
-      in.read(data.data(), static_cast<std::streamsize>(data.size()));
-      data.resize(static_cast<std::size_t>(in.gcount()));
-      c.seen(name, name);
-      if (data.size() > limits.maxFileBytes) {
-        c.note(tooLarge(name, limits.maxFileBytes, limits, true));
-      } else {
-        c.offer(name, name, 1, std::move(data));
-      }
-      return c.finish(dest, "submission", true, false);
+// A single task file submitted on its own (not an archive): taken as it is.
+Intake readLoneFile(const fs::path& submission, const fs::path& dest, const IntakeLimits& limits) {
+  const std::string name = submission.filename().string();
+  Collector c(limits);
+  std::ifstream in(submission, std::ios::binary);
+  std::string data(limits.maxFileBytes + 1, '\0');
+  in.read(data.data(), static_cast<std::streamsize>(data.size()));
+  data.resize(static_cast<std::size_t>(in.gcount()));
+  c.seen(name, name);
+  if (data.size() > limits.maxFileBytes) {
+    c.note(tooLarge(name, limits.maxFileBytes, limits, true));
+  } else {
+    c.offer(name, name, 1, std::move(data));
+  }
+  return c.finish(dest, "submission", true, false);
+}
+
+Intake refused(std::string why) {
+  Intake out;
+  out.error = std::move(why);
+  return out;
+}
+
+// One pass over an open archive's entries, within the limits: each entry read by step(), which
+// says whether to go on; the task files offered to the Collector, the rest noted.
+class ArchiveWalk {
+ public:
+  ArchiveWalk(archive* a, const fs::path& submission, const IntakeLimits& limits)
+      : a_(a), submission_(submission), limits_(limits), c_(limits) {}
+
+  Intake run(const fs::path& dest) {
+    while (step()) {
     }
-    Intake out;
-    out.error = "cannot read the submission " + submission.string() +
-                ": it is neither a folder nor a zip or tar archive (" + openError +
-                "); submit a folder, a .zip, a .tar or a .tar.gz with the six .cpp files";
-    return out;
+    if (!fatal_.empty()) return refused(fatal_);
+    if (!damage_.empty()) {
+      // Nothing usable: say so as an error, so that a TA asks for the archive again.
+      if (!c_.anyChosen()) {
+        return refused("cannot read the archive " + submission_.string() + ": " + damage_ +
+                       "; no task file could be read before that point (damaged or truncated? "
+                       "re-create the archive and submit it again)");
+      }
+      c_.note(damage_ +
+              "; reading stopped there and only the task files read before that point "
+              "are used");
+    }
+    return c_.finish(dest, "archive", anyEntries_, sawNested_);
   }
 
-  Collector c(limits);
-  bool anyEntries = false, sawNested = false;
-  std::string damage;  // why reading stopped early, when the archive is damaged
-  std::size_t entries = 0, readBytes = 0;
-  std::string lastPath;
+ private:
+  enum class Data { Read, TooLarge, Failed };
+
   // Bytes the archive has made us decompress so far (zip skips entries by seeking).
-  auto consumed = [&](bool zip) {
-    return zip ? readBytes : static_cast<std::size_t>(archive_filter_bytes(a.get(), 0));
-  };
-  for (;;) {
+  std::size_t consumed(bool zip) const {
+    return zip ? readBytes_ : static_cast<std::size_t>(archive_filter_bytes(a_, 0));
+  }
+
+  // The next entry; false when the walk ends (the end, a limit, damage).
+  bool step() {
     archive_entry* e = nullptr;
-    const int r = archive_read_next_header(a.get(), &e);
-    if (r == ARCHIVE_EOF) break;
-    if (r == ARCHIVE_RETRY) {
-      if (++entries > limits.maxEntries) break;
-      continue;
-    }
-    if (r == ARCHIVE_FATAL) {
-      if (entries == 0) {
-        Intake out;
-        out.error = "cannot read the archive " + submission.string() + ": " +
-                    archiveError(a.get()) +
-                    " (damaged or truncated? re-create the archive and submit it again)";
-        return out;
-      }
-      damage =
-          "the archive is damaged after " + std::to_string(entries) + " entries" +
-          (lastPath.empty() ? std::string() : " (the last one read: " + shownPath(lastPath) + ")") +
-          ": " + archiveError(a.get());
-      break;
-    }
+    const int r = archive_read_next_header(a_, &e);
+    if (r == ARCHIVE_EOF) return false;
+    if (r == ARCHIVE_RETRY) return ++entries_ <= limits_.maxEntries;
+    if (r == ARCHIVE_FATAL) return damaged();
     // ARCHIVE_OK or ARCHIVE_WARN (e.g. a name in an unknown character set): go on.
-    const bool zip = (archive_format(a.get()) & ARCHIVE_FORMAT_BASE_MASK) == ARCHIVE_FORMAT_ZIP;
-    if (++entries > limits.maxEntries) {
-      c.note("reading stopped after " + std::to_string(limits.maxEntries) +
-             " entries (the limit): the archive holds too many files; entries after that "
-             "point were not looked at");
-      break;
+    const bool zip = (archive_format(a_) & ARCHIVE_FORMAT_BASE_MASK) == ARCHIVE_FORMAT_ZIP;
+    if (!withinLimits(zip)) return false;
+    anyEntries_ = true;
+    return take(e, zip);
+  }
+
+  // A header that cannot be read: nothing at all, or damage after some entries.
+  bool damaged() {
+    if (entries_ == 0) {
+      fatal_ = "cannot read the archive " + submission_.string() + ": " + archiveError(a_) +
+               " (damaged or truncated? re-create the archive and submit it again)";
+      return false;
     }
-    if (consumed(zip) > limits.maxTotalBytes) {
-      c.note("reading stopped after " + humanBytes(limits.maxTotalBytes) +
-             " of data (the limit): the archive is too large; entries after that point were "
-             "not looked at");
-      break;
+    damage_ =
+        "the archive is damaged after " + std::to_string(entries_) + " entries" +
+        (lastPath_.empty() ? std::string() : " (the last one read: " + shownPath(lastPath_) + ")") +
+        ": " + archiveError(a_);
+    return false;
+  }
+
+  bool withinLimits(bool zip) {
+    if (++entries_ > limits_.maxEntries) {
+      c_.note("reading stopped after " + std::to_string(limits_.maxEntries) +
+              " entries (the limit): the archive holds too many files; entries after that "
+              "point were not looked at");
+      return false;
     }
-    anyEntries = true;
+    if (consumed(zip) > limits_.maxTotalBytes) {
+      c_.note("reading stopped after " + humanBytes(limits_.maxTotalBytes) +
+              " of data (the limit): the archive is too large; entries after that point were "
+              "not looked at");
+      return false;
+    }
+    return true;
+  }
+
+  // One entry: screened, and read when it is a task file wanted.
+  bool take(archive_entry* e, bool zip) {
     const char* rawName = archive_entry_pathname_utf8(e);
     if (rawName == nullptr) rawName = archive_entry_pathname(e);
     if (rawName == nullptr) {
-      c.entryNote("entry " + std::to_string(entries) + ": skipped: its name cannot be read");
-      continue;
+      c_.entryNote("entry " + std::to_string(entries_) + ": skipped: its name cannot be read");
+      return true;
     }
     const std::string raw = rawName;
-    lastPath = raw;
+    lastPath_ = raw;
     const EntryPath p = splitPath(raw);
     std::string target;
     if (const char* t = archive_entry_hardlink(e))
       target = t;
     else if (const char* t2 = archive_entry_symlink(e))
       target = t2;
-    const std::string name = screen(c, raw, p, kindOf(e), target, sawNested);
+    const std::string name = screen(c_, raw, p, kindOf(e), target, sawNested_);
     const bool sizeKnown = archive_entry_size_is_set(e) != 0;
     const auto size = static_cast<std::uintmax_t>(std::max<la_int64_t>(0, archive_entry_size(e)));
-    if (name.empty()) {
-      // Skipping a tar entry decompresses it: stop before a huge one instead (zip seeks).
-      if (!zip && sizeKnown && consumed(zip) + size > limits.maxTotalBytes) {
-        c.note(shownPath(raw) + " holds " + humanBytes(size) +
-               ": reading stopped there, over the " + humanBytes(limits.maxTotalBytes) +
-               " limit for a whole submission; entries "
-               "after it were not looked at");
-        break;
-      }
-      continue;
-    }
+    if (name.empty()) return skip(raw, zip, sizeKnown, size);
     const std::string rel = joinPath(p.parts);
-    c.seen(name, rel);
+    c_.seen(name, rel);
     if (archive_entry_is_encrypted(e)) {
-      c.entryNote(shownPath(raw) + ": refused: it is encrypted; submit it without a password");
-      continue;
+      c_.entryNote(shownPath(raw) + ": refused: it is encrypted; submit it without a password");
+      return true;
     }
-    if (sizeKnown && size > limits.maxFileBytes) {
-      c.entryNote(tooLarge(raw, size, limits, false));
-      continue;
+    if (sizeKnown && size > limits_.maxFileBytes) {
+      c_.entryNote(tooLarge(raw, size, limits_, false));
+      return true;
     }
-    if (!c.wanted(name, rel, p.parts.size())) continue;
-    // Read it, never more than the cap (a zip's declared size may lie).
+    if (!c_.wanted(name, rel, p.parts.size())) return true;
+    return read(raw, name, rel, p.parts.size());
+  }
+
+  // Skipping a tar entry decompresses it: stop before a huge one instead (zip seeks).
+  bool skip(const std::string& raw, bool zip, bool sizeKnown, std::uintmax_t size) {
+    if (zip || !sizeKnown || consumed(zip) + size <= limits_.maxTotalBytes) return true;
+    c_.note(shownPath(raw) + " holds " + humanBytes(size) + ": reading stopped there, over the " +
+            humanBytes(limits_.maxTotalBytes) +
+            " limit for a whole submission; entries "
+            "after it were not looked at");
+    return false;
+  }
+
+  bool read(const std::string& raw, const std::string& name, const std::string& rel,
+            std::size_t depth) {
     std::string data;
+    switch (readData(data)) {
+      case Data::Failed:
+        damage_ = "the archive is damaged: the data of " + shownPath(raw) + " cannot be read (" +
+                  archiveError(a_) + ")";
+        return false;
+      case Data::TooLarge:
+        c_.entryNote(tooLarge(raw, limits_.maxFileBytes, limits_, true));
+        return true;
+      case Data::Read:
+        break;
+    }
+    c_.offer(name, rel, depth, std::move(data));
+    return true;
+  }
+
+  // The current entry's data, never more than the cap (a zip's declared size may lie).
+  Data readData(std::string& data) {
     char buf[16 << 10];
-    bool over = false, failed = false;
     for (;;) {
-      const la_ssize_t n = archive_read_data(a.get(), buf, sizeof buf);
-      if (n == 0) break;
+      const la_ssize_t n = archive_read_data(a_, buf, sizeof buf);
+      if (n == 0) return Data::Read;
       if (n < 0) {
         if (n == ARCHIVE_WARN || n == ARCHIVE_RETRY) continue;
-        failed = true;
-        break;
+        return Data::Failed;
       }
-      readBytes += static_cast<std::size_t>(n);
-      if (data.size() + static_cast<std::size_t>(n) > limits.maxFileBytes) {
-        over = true;
-        break;
-      }
+      readBytes_ += static_cast<std::size_t>(n);
+      if (data.size() + static_cast<std::size_t>(n) > limits_.maxFileBytes) return Data::TooLarge;
       data.append(buf, static_cast<std::size_t>(n));
     }
-    if (failed) {
-      damage = "the archive is damaged: the data of " + shownPath(raw) + " cannot be read (" +
-               archiveError(a.get()) + ")";
-      break;
-    }
-    if (over) {
-      c.entryNote(tooLarge(raw, limits.maxFileBytes, limits, true));
-      continue;
-    }
-    c.offer(name, rel, p.parts.size(), std::move(data));
   }
-  if (!damage.empty()) {
-    if (!c.anyChosen()) {
-      // Nothing usable: say so as an error, so that a TA asks for the archive again.
-      Intake out;
-      out.error = "cannot read the archive " + submission.string() + ": " + damage +
-                  "; no task file could be read before that point (damaged or truncated? "
-                  "re-create the archive and submit it again)";
-      return out;
-    }
-    c.note(damage +
-           "; reading stopped there and only the task files read before that point "
-           "are used");
-  }
-  return c.finish(dest, "archive", anyEntries, sawNested);
+
+  archive* a_;
+  const fs::path& submission_;
+  const IntakeLimits& limits_;
+  Collector c_;
+  bool anyEntries_ = false, sawNested_ = false;
+  std::string damage_;  // why reading stopped early, when the archive is damaged
+  std::string fatal_;   // why nothing could be read at all
+  std::size_t entries_ = 0, readBytes_ = 0;
+  std::string lastPath_;
+};
+
+Intake readArchive(const fs::path& submission, const fs::path& dest, const IntakeLimits& limits) {
+  std::string openError;
+  auto a = openArchive(submission, openError);
+  if (a) return ArchiveWalk(a.get(), submission, limits).run(dest);
+  if (isTaskFile(submission.filename().string())) return readLoneFile(submission, dest, limits);
+  return refused("cannot read the submission " + submission.string() +
+                 ": it is neither a folder nor a zip or tar archive (" + openError +
+                 "); submit a folder, a .zip, a .tar or a .tar.gz with the six .cpp files");
 }
 
 // ---- folders (std::filesystem, links never followed) ----
