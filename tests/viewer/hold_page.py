@@ -10,6 +10,7 @@ Debian 13's noVNC 1.6. With it, the frame has SECONDS of real time to connect an
 """
 import http.server
 import sys
+import time
 
 PORT, URL, SECONDS = int(sys.argv[1]), sys.argv[2], float(sys.argv[3])
 PAGE = (
@@ -22,8 +23,6 @@ class Handler(http.server.BaseHTTPRequestHandler):
     def do_GET(self):
         body, kind = PAGE, "text/html"
         if self.path.startswith("/hold"):
-            import time
-
             time.sleep(SECONDS)
             body, kind = b"", "text/plain"
         self.send_response(200)
