@@ -51,11 +51,12 @@ packages=(
 # Per platform: Debian gets Chromium, the headless browser that checks the desktop in the
 # browser (ctest viewer_desktop_in_browser; Ubuntu's chromium is a snap, which chroots and
 # containers cannot run, so the test skips there); Debian 12 also gets g++-11, Ubuntu 22.04's
-# compiler, for the Gradescope image's check (scripts/compat-ubuntu2204.sh); Ubuntu 22.04 has no
+# compiler, for the Gradescope image's check (scripts/compat-ubuntu2204.sh), and clang-format and
+# clang-tidy 14, for the layout and function-size tests (tests/format/); Ubuntu 22.04 has no
 # toml++ package (the Gradescope zip carries a copy of it; a checkout there builds everything
 # but the grader, cmake/A6Toml.cmake).
 case "$os_id:$os_version" in
-  debian:12) packages+=(chromium g++-11) ;;
+  debian:12) packages+=(chromium g++-11 clang-format clang-tidy) ;;
   debian:13) packages+=(chromium) ;;
   ubuntu:22.04)
     echo "install-deps: Ubuntu 22.04 has no libtomlplusplus-dev: skipped" >&2

@@ -35,6 +35,64 @@ std::vector<SpringData> springsAsData(const MassSpringSystem& system) {
   return out;
 }
 
+// What the joint types with local anchors share.
+template <class J>
+void describeAnchors(J* j, JointInfo& info) {
+  info.localAnchorA = toVec(j->GetLocalAnchorA());
+  info.localAnchorB = toVec(j->GetLocalAnchorB());
+}
+
+// What the revolute, prismatic and wheel joints share: a limit and a motor.
+template <class J>
+void describeLimitAndMotor(J* j, JointInfo& info) {
+  describeAnchors(j, info);
+  info.enableLimit = j->IsLimitEnabled();
+  info.lower = j->GetLowerLimit();
+  info.upper = j->GetUpperLimit();
+  info.enableMotor = j->IsMotorEnabled();
+  info.motorSpeed = j->GetMotorSpeed();
+}
+
+void describeRevolute(b2RevoluteJoint* j, JointInfo& info) {
+  info.type = "revolute";
+  describeLimitAndMotor(j, info);
+  info.maxMotor = j->GetMaxMotorTorque();
+}
+
+void describePrismatic(b2PrismaticJoint* j, JointInfo& info) {
+  info.type = "prismatic";
+  describeLimitAndMotor(j, info);
+  info.localAxisA = toVec(j->GetLocalAxisA());
+  info.maxMotor = j->GetMaxMotorForce();
+}
+
+void describeDistance(b2DistanceJoint* j, JointInfo& info) {
+  info.type = "distance";
+  describeAnchors(j, info);
+  info.length = j->GetLength();
+  info.minLength = j->GetMinLength();
+  info.maxLength = j->GetMaxLength();
+  info.stiffness = j->GetStiffness();
+  info.damping = j->GetDamping();
+}
+
+void describeWheel(b2WheelJoint* j, JointInfo& info) {
+  info.type = "wheel";
+  describeLimitAndMotor(j, info);
+  info.localAxisA = toVec(j->GetLocalAxisA());
+  info.maxMotor = j->GetMaxMotorTorque();
+  info.stiffness = j->GetStiffness();
+  info.damping = j->GetDamping();
+}
+
+void describeMouse(b2MouseJoint* j, JointInfo& info) {
+  info.type = "mouse";
+  info.target = toVec(j->GetTarget());
+  info.maxForce = j->GetMaxForce();
+  info.stiffness = j->GetStiffness();
+  info.damping = j->GetDamping();
+}
+
 JointInfo describe(const Box2DScene& scene, b2Joint* joint, float invDt) {
   JointInfo info;
   info.bodyA = scene.indexOf(joint->GetBodyA());
@@ -44,70 +102,21 @@ JointInfo describe(const Box2DScene& scene, b2Joint* joint, float invDt) {
   info.collideConnected = joint->GetCollideConnected();
   info.reactionForce = toVec(joint->GetReactionForce(invDt));
   switch (joint->GetType()) {
-    case e_revoluteJoint: {
-      auto* j = static_cast<b2RevoluteJoint*>(joint);
-      info.type = "revolute";
-      info.localAnchorA = toVec(j->GetLocalAnchorA());
-      info.localAnchorB = toVec(j->GetLocalAnchorB());
-      info.enableLimit = j->IsLimitEnabled();
-      info.lower = j->GetLowerLimit();
-      info.upper = j->GetUpperLimit();
-      info.enableMotor = j->IsMotorEnabled();
-      info.motorSpeed = j->GetMotorSpeed();
-      info.maxMotor = j->GetMaxMotorTorque();
+    case e_revoluteJoint:
+      describeRevolute(static_cast<b2RevoluteJoint*>(joint), info);
       break;
-    }
-    case e_prismaticJoint: {
-      auto* j = static_cast<b2PrismaticJoint*>(joint);
-      info.type = "prismatic";
-      info.localAnchorA = toVec(j->GetLocalAnchorA());
-      info.localAnchorB = toVec(j->GetLocalAnchorB());
-      info.localAxisA = toVec(j->GetLocalAxisA());
-      info.enableLimit = j->IsLimitEnabled();
-      info.lower = j->GetLowerLimit();
-      info.upper = j->GetUpperLimit();
-      info.enableMotor = j->IsMotorEnabled();
-      info.motorSpeed = j->GetMotorSpeed();
-      info.maxMotor = j->GetMaxMotorForce();
+    case e_prismaticJoint:
+      describePrismatic(static_cast<b2PrismaticJoint*>(joint), info);
       break;
-    }
-    case e_distanceJoint: {
-      auto* j = static_cast<b2DistanceJoint*>(joint);
-      info.type = "distance";
-      info.localAnchorA = toVec(j->GetLocalAnchorA());
-      info.localAnchorB = toVec(j->GetLocalAnchorB());
-      info.length = j->GetLength();
-      info.minLength = j->GetMinLength();
-      info.maxLength = j->GetMaxLength();
-      info.stiffness = j->GetStiffness();
-      info.damping = j->GetDamping();
+    case e_distanceJoint:
+      describeDistance(static_cast<b2DistanceJoint*>(joint), info);
       break;
-    }
-    case e_wheelJoint: {
-      auto* j = static_cast<b2WheelJoint*>(joint);
-      info.type = "wheel";
-      info.localAnchorA = toVec(j->GetLocalAnchorA());
-      info.localAnchorB = toVec(j->GetLocalAnchorB());
-      info.localAxisA = toVec(j->GetLocalAxisA());
-      info.enableLimit = j->IsLimitEnabled();
-      info.lower = j->GetLowerLimit();
-      info.upper = j->GetUpperLimit();
-      info.enableMotor = j->IsMotorEnabled();
-      info.motorSpeed = j->GetMotorSpeed();
-      info.maxMotor = j->GetMaxMotorTorque();
-      info.stiffness = j->GetStiffness();
-      info.damping = j->GetDamping();
+    case e_wheelJoint:
+      describeWheel(static_cast<b2WheelJoint*>(joint), info);
       break;
-    }
-    case e_mouseJoint: {
-      auto* j = static_cast<b2MouseJoint*>(joint);
-      info.type = "mouse";
-      info.target = toVec(j->GetTarget());
-      info.maxForce = j->GetMaxForce();
-      info.stiffness = j->GetStiffness();
-      info.damping = j->GetDamping();
+    case e_mouseJoint:
+      describeMouse(static_cast<b2MouseJoint*>(joint), info);
       break;
-    }
     default:
       info.type = "other";
   }

@@ -260,6 +260,82 @@ std::string safeName(const std::string& text) {
 
 // ---- Gradescope -------------------------------------------------------------------------------
 
+namespace {
+
+// Reads a Gradescope submission_metadata.yml one line at a time (the shape: see
+// parseGradescopeMetadata).
+class MetadataReader {
+ public:
+  void read(std::string line) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const int indent = indentOf(line);
+    const std::string body = line.substr(static_cast<std::size_t>(indent));
+    if (body.empty() || body[0] == '#' || body == "---" || body[0] == '\t') return;
+    if (indent == 0) {
+      startSubmission(body);
+      return;
+    }
+    if (people_ == nullptr) return;
+    if (childIndent_ < 0) childIndent_ = indent;
+    if (listIndent_ >= 0 && inSubmitters(indent, body)) return;
+    std::string key, value;
+    if (indent == childIndent_ && keyValue(body, key, value) && key == "submitters" &&
+        yamlScalar(value).empty()) {
+      listIndent_ = indent;  // (":submitters: []" names nobody)
+      itemIndent_ = -1;
+    }
+  }
+
+  std::map<std::string, std::vector<Person>> take() { return std::move(out_); }
+
+ private:
+  // A top-level key starts the next submission (a block scalar's text is always indented).
+  void startSubmission(const std::string& body) {
+    std::string key, value;
+    people_ = nullptr;
+    listIndent_ = -1;
+    if (keyValue(body, key, value) && yamlScalar(value).empty()) {
+      people_ = &out_[key];
+      childIndent_ = -1;
+    }
+  }
+
+  // Inside the :submitters: list: a line of it (true), or the first line after it (false).
+  bool inSubmitters(int indent, const std::string& body) {
+    const bool item = body.rfind("- ", 0) == 0;
+    if (item && indent >= listIndent_ && (itemIndent_ < 0 || indent == itemIndent_)) {
+      itemIndent_ = indent;
+      people_->emplace_back();
+      setField(body.substr(2));
+      return true;
+    }
+    if (itemIndent_ >= 0 && indent == itemIndent_ + 2) {
+      setField(body);
+      return true;
+    }
+    if (indent > listIndent_) return true;  // deeper data of a submitter
+    listIndent_ = -1;                       // the list ended
+    return false;
+  }
+
+  void setField(const std::string& text) {
+    std::string key, value;
+    if (people_->empty() || !keyValue(text, key, value)) return;
+    Person& p = people_->back();
+    if (key == "name") p.name = yamlScalar(value);
+    if (key == "email") p.email = yamlScalar(value);
+    if (key == "sid") p.sid = yamlScalar(value);
+  }
+
+  std::map<std::string, std::vector<Person>> out_;
+  std::vector<Person>* people_ = nullptr;  // the submission being read
+  int childIndent_ = -1;                   // indentation of its keys
+  int listIndent_ = -1;                    // >= 0 inside its :submitters: list: the key's indent
+  int itemIndent_ = -1;                    // indentation of the list's "- "
+};
+
+}  // namespace
+
 std::map<std::string, std::vector<Person>> parseGradescopeMetadata(const std::string& yaml) {
   // The shape read (Gradescope writes Ruby symbols as keys; other keys and deeper data skipped):
   //   submission_<id>:
@@ -268,61 +344,10 @@ std::map<std::string, std::vector<Person>> parseGradescopeMetadata(const std::st
   //       :sid: '123'
   //       :email: jane@example.edu
   //     :created_at: ...
-  std::map<std::string, std::vector<Person>> out;
-  std::vector<Person>* people = nullptr;  // the submission being read
-  int childIndent = -1;                   // indentation of its keys
-  int listIndent = -1;                    // >= 0 inside its :submitters: list: the key's indent
-  int itemIndent = -1;                    // indentation of the list's "- "
-  auto setField = [&](const std::string& text) {
-    std::string key, value;
-    if (people->empty() || !keyValue(text, key, value)) return;
-    Person& p = people->back();
-    if (key == "name") p.name = yamlScalar(value);
-    if (key == "email") p.email = yamlScalar(value);
-    if (key == "sid") p.sid = yamlScalar(value);
-  };
+  MetadataReader reader;
   std::istringstream in(yaml);
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const int indent = indentOf(line);
-    const std::string body = line.substr(static_cast<std::size_t>(indent));
-    if (body.empty() || body[0] == '#' || body == "---" || body[0] == '\t') continue;
-    if (indent == 0) {
-      // A top-level key starts the next submission (a block scalar's text is always indented).
-      std::string key, value;
-      people = nullptr;
-      listIndent = -1;
-      if (keyValue(body, key, value) && yamlScalar(value).empty()) {
-        people = &out[key];
-        childIndent = -1;
-      }
-      continue;
-    }
-    if (people == nullptr) continue;
-    if (childIndent < 0) childIndent = indent;
-    const bool item = body.rfind("- ", 0) == 0;
-    if (listIndent >= 0) {
-      if (item && indent >= listIndent && (itemIndent < 0 || indent == itemIndent)) {
-        itemIndent = indent;
-        people->emplace_back();
-        setField(body.substr(2));
-        continue;
-      }
-      if (itemIndent >= 0 && indent == itemIndent + 2) {
-        setField(body);
-        continue;
-      }
-      if (indent > listIndent) continue;  // deeper data of a submitter
-      listIndent = -1;                    // the list ended
-    }
-    std::string key, value;
-    if (indent == childIndent && keyValue(body, key, value) && key == "submitters" &&
-        yamlScalar(value).empty()) {
-      listIndent = indent;  // (":submitters: []" names nobody)
-      itemIndent = -1;
-    }
-  }
-  return out;
+  for (std::string line; std::getline(in, line);) reader.read(line);
+  return reader.take();
 }
 
 // ---- Canvas -----------------------------------------------------------------------------------
@@ -421,6 +446,55 @@ void findPlain(const fs::path& input, const fs::path& exclude, Inventory& inv) {
   }
 }
 
+// The submission in export folder or archive `path` (named `id`), its people from the metadata
+// (the folder's name when it names nobody), its key made of their names.
+Submission gradescopeSubmission(const std::string& id, const fs::path& path,
+                                const std::map<std::string, std::vector<Person>>& metadata) {
+  Submission s;
+  s.path = path;
+  const auto found = metadata.find(id);
+  if (found != metadata.end()) {
+    for (const Person& p : found->second) {
+      if (!p.name.empty() || !p.email.empty() || !p.sid.empty()) s.people.push_back(p);
+    }
+  } else {
+    s.notes.push_back(id + " is not in submission_metadata.yml");
+  }
+  if (s.people.empty()) {
+    s.people.push_back({id, "", ""});
+    if (found != metadata.end()) s.notes.push_back(id + " has no submitter in the metadata");
+  }
+  std::string base;
+  for (const Person& p : s.people) {
+    const std::string who = !p.name.empty() ? p.name : !p.sid.empty() ? p.sid : p.email;
+    base += (base.empty() ? "" : "-") + safeName(who);
+  }
+  s.key = safeName(base);
+  if (s.people.size() > 1) {
+    s.notes.push_back("a group submission of " + std::to_string(s.people.size()) +
+                      " students: one gradebook row each");
+  }
+  return s;
+}
+
+// The submission id of an export entry (submission_<id>, a folder or an archive), or "" (noted)
+// when it is none.
+std::string gradescopeId(const fs::directory_entry& e, Inventory& inv) {
+  const std::string name = e.path().filename().string();
+  std::error_code ec;
+  const fs::file_status st = e.symlink_status(ec);
+  const bool folder = fs::is_directory(st);
+  const bool archive = fs::is_regular_file(st) && !archiveExtension(name).empty();
+  const std::string id =
+      archive ? name.substr(0, name.size() - archiveExtension(name).size()) : name;
+  if ((!folder && !archive) || id.rfind("submission_", 0) != 0) {
+    inv.notes.push_back(name + ": " + describeEntry(st) +
+                        ", not a submission_<id> folder of the export: skipped");
+    return "";
+  }
+  return id;
+}
+
 void findGradescope(const fs::path& input, const fs::path& exclude, Inventory& inv) {
   const fs::path root = gradescopeRoot(input, exclude);
   if (root.empty()) {
@@ -437,45 +511,12 @@ void findGradescope(const fs::path& input, const fs::path& exclude, Inventory& i
   std::set<std::string> seen;
   for (const fs::directory_entry& e : sortedEntries(root, inv.error)) {
     const std::string name = e.path().filename().string();
-    std::error_code ec;
-    const fs::file_status st = e.symlink_status(ec);
     if (name == "submission_metadata.yml" || sameFile(e.path(), exclude)) continue;
     if (systemEntry(name, inv.notes)) continue;
-    const bool folder = fs::is_directory(st);
-    const bool archive = fs::is_regular_file(st) && !archiveExtension(name).empty();
-    const std::string id =
-        archive ? name.substr(0, name.size() - archiveExtension(name).size()) : name;
-    if ((!folder && !archive) || id.rfind("submission_", 0) != 0) {
-      inv.notes.push_back(name + ": " + describeEntry(st) +
-                          ", not a submission_<id> folder of the export: skipped");
-      continue;
-    }
+    const std::string id = gradescopeId(e, inv);
+    if (id.empty()) continue;
     seen.insert(id);
-    Submission s;
-    s.path = e.path();
-    const auto found = metadata.find(id);
-    if (found != metadata.end()) {
-      for (const Person& p : found->second) {
-        if (!p.name.empty() || !p.email.empty() || !p.sid.empty()) s.people.push_back(p);
-      }
-    } else {
-      s.notes.push_back(id + " is not in submission_metadata.yml");
-    }
-    if (s.people.empty()) {
-      s.people.push_back({id, "", ""});
-      if (found != metadata.end()) s.notes.push_back(id + " has no submitter in the metadata");
-    }
-    std::string base;
-    for (const Person& p : s.people) {
-      const std::string who = !p.name.empty() ? p.name : !p.sid.empty() ? p.sid : p.email;
-      base += (base.empty() ? "" : "-") + safeName(who);
-    }
-    s.key = safeName(base);
-    if (s.people.size() > 1) {
-      s.notes.push_back("a group submission of " + std::to_string(s.people.size()) +
-                        " students: one gradebook row each");
-    }
-    inv.submissions.push_back(std::move(s));
+    inv.submissions.push_back(gradescopeSubmission(id, e.path(), metadata));
   }
   for (const auto& [id, people] : metadata) {
     if (!seen.count(id)) {
@@ -669,6 +710,64 @@ std::vector<std::string> flagsOf(const Json& incidents) {
   return flags;
 }
 
+// The task (1..6) a test's tags name, 0 for none; and whether they say extra credit.
+std::pair<int, bool> taskOfTags(const Json& tags) {
+  int task = 0;
+  bool extraCredit = false;
+  for (const Json& tag : tags) {
+    if (!tag.is_string()) continue;
+    const std::string s = tag.get<std::string>();
+    if (s == "extra_credit") extraCredit = true;
+    if (s.size() == 5 && s.rfind("task", 0) == 0 && s[4] >= '1' && s[4] <= '6') task = s[4] - '0';
+  }
+  return {task, extraCredit};
+}
+
+// The points of the tests summed per task and as extra credit, and the maximum, into `o`
+// (extra_data's own maximum and extra credit win when given).
+void pointsOfTests(const Json& tests, const Json& extra, Outcome& o) {
+  double max = 0, extraCredit = 0;
+  std::array<double, 6> tasks{};
+  for (const Json& t : tests) {
+    const double score = t.value("score", 0.0);
+    max += t.value("max_score", 0.0);
+    const auto [task, isExtra] = taskOfTags(t.value("tags", Json::array()));
+    if (isExtra) {
+      extraCredit += score;
+    } else if (task > 0) {
+      tasks[static_cast<std::size_t>(task - 1)] += score;
+    }
+  }
+  o.max = numberOf(extra.value("max_score", Json())).value_or(max);
+  o.extraCredit = numberOf(extra.value("extra_credit", Json())).value_or(extraCredit);
+  for (std::size_t i = 0; i < tasks.size(); ++i) o.tasks[i] = std::round(tasks[i] * 1e4) / 1e4;
+}
+
+// Which task files fell back to the starter, and why, from extra_data.build (file -> status):
+// "no task file in the submission", "spring.cpp, forces.cpp compile error; ...", or "".
+std::string brokenBuild(const Json& extra) {
+  std::vector<std::pair<std::string, std::string>> byStatus;  // status -> its files, in order
+  int missing = 0, files = 0;
+  if (extra.contains("build") && extra["build"].is_object()) {
+    for (const auto& [file, status] : extra["build"].items()) {
+      const std::string s = status.is_string() ? status.get<std::string>() : status.dump();
+      ++files;
+      if (s == "compiled") continue;
+      missing += s == "missing";
+      auto it = std::find_if(byStatus.begin(), byStatus.end(),
+                             [&](const auto& b) { return b.first == s; });
+      if (it == byStatus.end()) it = byStatus.insert(byStatus.end(), {s, ""});
+      it->second += (it->second.empty() ? "" : ", ") + file;
+    }
+  }
+  if (missing > 0 && missing == files) return "no task file in the submission";
+  std::string broken;
+  for (const auto& [status, list] : byStatus) {
+    broken += (broken.empty() ? "" : "; ") + list + " " + status;
+  }
+  return broken;
+}
+
 }  // namespace
 
 Outcome outcomeOfResults(const std::string& resultsJson) {
@@ -695,57 +794,9 @@ Outcome outcomeOfResults(const std::string& resultsJson) {
     return o;
   }
   o.flags = flagsOf(extra.value("incidents", Json::object()));
-  double max = 0, extra_credit = 0;
-  std::array<double, 6> tasks{};
-  for (const Json& t : r["tests"]) {
-    const double score = t.value("score", 0.0);
-    max += t.value("max_score", 0.0);
-    int task = 0;
-    bool ec = false;
-    for (const Json& tag : t.value("tags", Json::array())) {
-      if (!tag.is_string()) continue;
-      const std::string s = tag.get<std::string>();
-      if (s == "extra_credit") ec = true;
-      if (s.size() == 5 && s.rfind("task", 0) == 0 && s[4] >= '1' && s[4] <= '6') task = s[4] - '0';
-    }
-    if (ec) {
-      extra_credit += score;
-    } else if (task > 0) {
-      tasks[static_cast<std::size_t>(task - 1)] += score;
-    }
-  }
-  o.max = numberOf(extra.value("max_score", Json())).value_or(max);
-  o.extraCredit = numberOf(extra.value("extra_credit", Json())).value_or(extra_credit);
-  for (std::size_t i = 0; i < tasks.size(); ++i) o.tasks[i] = std::round(tasks[i] * 1e4) / 1e4;
-  // Which task files fell back to the starter, and why (extra_data.build: file -> status).
-  std::vector<std::pair<std::string, std::string>> byStatus;  // status -> its files, in order
-  int missing = 0, files = 0;
-  if (extra.contains("build") && extra["build"].is_object()) {
-    for (const auto& [file, status] : extra["build"].items()) {
-      const std::string s = status.is_string() ? status.get<std::string>() : status.dump();
-      ++files;
-      if (s == "compiled") continue;
-      missing += s == "missing";
-      auto it = std::find_if(byStatus.begin(), byStatus.end(),
-                             [&](const auto& b) { return b.first == s; });
-      if (it == byStatus.end()) it = byStatus.insert(byStatus.end(), {s, ""});
-      it->second += (it->second.empty() ? "" : ", ") + file;
-    }
-  }
-  std::string broken;
-  if (missing > 0 && missing == files) {
-    broken = "no task file in the submission";
-  } else {
-    for (const auto& [status, list] : byStatus) {
-      broken += (broken.empty() ? "" : "; ") + list + " " + status;
-    }
-  }
-  if (broken.empty()) {
-    o.status = kGraded;
-  } else {
-    o.status = kBuildFailed;
-    o.reason = broken;
-  }
+  pointsOfTests(r["tests"], extra, o);
+  o.reason = brokenBuild(extra);
+  o.status = o.reason.empty() ? kGraded : kBuildFailed;
   return o;
 }
 

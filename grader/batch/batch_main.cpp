@@ -261,12 +261,45 @@ class Batch {
 
   int run() {
     const auto start = Clock::now();
-    // What is graded already, unchanged (or everything, with --force).
+    const std::vector<std::size_t> queue = toGrade();
+    writeGradebook();
+    const int skipped = static_cast<int>(std::count(skipped_.begin(), skipped_.end(), true));
+    Progress progress(static_cast<int>(inv_.submissions.size()), skipped,
+                      static_cast<int>(queue.size()), jobs_, isatty(STDERR_FILENO) == 1);
+    std::size_t next = 0;
+    auto lastSweep = Clock::now();
+    while (next < queue.size() || !running_.empty()) {
+      if (gSignal != 0) {
+        progress.clear();
+        return interrupted(static_cast<int>(gSignal));
+      }
+      while (running_.size() < static_cast<std::size_t>(jobs_) && next < queue.size()) {
+        const std::size_t i = queue[next++];
+        if (!launch(i)) finished(i, progress);
+      }
+      reapEnded(progress);
+      enforceTimeouts();
+      if (secondsSince(lastSweep) > sweepSeconds_) {
+        killStrays();
+        lastSweep = Clock::now();
+      }
+      progress.tick();
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));  // a signal cuts it short
+    }
+    progress.clear();
+    killStrays();
+    return summary(secondsSince(start), jobs_);
+  }
+
+ private:
+  // The submissions to grade: all but those graded already and unchanged (with --force, all).
+  // Creates every student's folder first: see "Other students' work".
+  std::vector<std::size_t> toGrade() {
     std::vector<std::size_t> queue;
     for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
       const Submission& s = inv_.submissions[i];
       std::error_code ec;
-      fs::create_directories(out_ / s.key, ec);  // before any grading: see "Other students' work"
+      fs::create_directories(out_ / s.key, ec);
       fingerprints_.push_back(fingerprint(s, fingerprintOptions_));
       if (!o_.force) {
         if (auto done = outcomeOfMarker(readAll(out_ / s.key / kMarker), fingerprints_[i]);
@@ -278,81 +311,63 @@ class Batch {
       }
       queue.push_back(i);
     }
-    writeGradebook();
-    const int jobs = jobs_;
-    const int skipped = static_cast<int>(std::count(skipped_.begin(), skipped_.end(), true));
-    Progress progress(static_cast<int>(inv_.submissions.size()), skipped,
-                      static_cast<int>(queue.size()), jobs, isatty(STDERR_FILENO) == 1);
-
-    std::size_t next = 0;
-    auto lastSweep = Clock::now();
-    while (next < queue.size() || !running_.empty()) {
-      if (gSignal != 0) {
-        progress.clear();
-        return interrupted(static_cast<int>(gSignal));
-      }
-      while (running_.size() < static_cast<std::size_t>(jobs) && next < queue.size()) {
-        const std::size_t i = queue[next++];
-        if (!launch(i)) {
-          ranSeconds_.push_back(outcomes_[i]->seconds);
-          progress.finished(inv_.submissions[i], *outcomes_[i]);
-          writeGradebook();
-        }
-      }
-      // Reap our a6_grade children, each by its pid.
-      for (std::size_t k = 0; k < running_.size();) {
-        bool vanished = false;
-        const std::optional<int> status = process::waitFor(running_[k].pid, 0, &vanished);
-        if (!status && !vanished) {
-          ++k;
-          continue;
-        }
-        const Running done = running_[k];
-        running_.erase(running_.begin() + static_cast<std::ptrdiff_t>(k));
-        finish(done, status, vanished);
-        progress.finished(inv_.submissions[done.index], *outcomes_[done.index]);
-        writeGradebook();
-      }
-      // The time limit: the whole process group, at once.
-      for (Running& r : running_) {
-        if (!r.timedOut && Clock::now() >= r.deadline) {
-          r.timedOut = true;
-          kill(-r.pid, SIGKILL);
-          kill(r.pid, SIGKILL);
-        }
-      }
-      if (secondsSince(lastSweep) > sweepSeconds_) {
-        killStrays();
-        lastSweep = Clock::now();
-      }
-      progress.tick();
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));  // a signal cuts it short
-    }
-    progress.clear();
-    killStrays();
-    return summary(secondsSince(start), jobs);
+    return queue;
   }
 
- private:
-  // Starts a6_grade on submission i; false when it could not (its outcome is then set).
-  bool launch(std::size_t i) {
-    Submission& s = inv_.submissions[i];
-    const fs::path dir = out_ / s.key;
-    std::error_code ec;
-    // Nothing of an earlier run may pass for this one's: the marker goes first.
-    for (const char* name : {kMarker, "results.json", "report.html", kLog})
-      fs::remove(dir / name, ec);
-    fs::remove_all(dir / "work", ec);
-    if (!s.files.empty()) {
-      if (const std::string e = stage(s, dir / "submission"); !e.empty()) {
-        Outcome o;
-        o.status = kGraderError;
-        o.reason = "could not stage the files: " + e;
-        outcomes_[i] = o;
-        return false;
+  // Submission i has its outcome: shown, and in the gradebook.
+  void finished(std::size_t i, Progress& progress) {
+    progress.finished(inv_.submissions[i], *outcomes_[i]);
+    writeGradebook();
+  }
+
+  // Reaps our a6_grade children that ended, each by its pid.
+  void reapEnded(Progress& progress) {
+    for (std::size_t k = 0; k < running_.size();) {
+      bool vanished = false;
+      const std::optional<int> status = process::waitFor(running_[k].pid, 0, &vanished);
+      if (!status && !vanished) {
+        ++k;
+        continue;
+      }
+      const Running done = running_[k];
+      running_.erase(running_.begin() + static_cast<std::ptrdiff_t>(k));
+      finish(done, status, vanished);
+      finished(done.index, progress);
+    }
+  }
+
+  // The time limit: the whole process group, at once.
+  void enforceTimeouts() {
+    for (Running& r : running_) {
+      if (!r.timedOut && Clock::now() >= r.deadline) {
+        r.timedOut = true;
+        kill(-r.pid, SIGKILL);
+        kill(r.pid, SIGKILL);
       }
     }
+  }
 
+  // Submission i gets no grading: a grader error, and why.
+  void failedToStart(std::size_t i, const std::string& why) {
+    Outcome o;
+    o.status = kGraderError;
+    o.reason = why;
+    outcomes_[i] = o;
+    ranSeconds_.push_back(o.seconds);
+  }
+
+  // Removes what an earlier run left in a student's folder; the marker goes first, so that
+  // nothing of an earlier run may pass for this one's.
+  static void clearEarlierRun(const fs::path& dir) {
+    std::error_code ec;
+    for (const char* name : {kMarker, "results.json", "report.html", kLog}) {
+      fs::remove(dir / name, ec);
+    }
+    fs::remove_all(dir / "work", ec);
+  }
+
+  // a6_grade's command line for submission s, its results into dir.
+  std::vector<std::string> graderArgs(const Submission& s, const fs::path& dir) const {
     std::vector<std::string> args = {grader_.string(), s.path.string(), "--out",
                                      dir.string(),     "--jobs",        "1"};
     if (!o_.rubric.empty()) args.insert(args.end(), {"--rubric", fs::absolute(o_.rubric).string()});
@@ -364,22 +379,47 @@ class Batch {
       args.insert(args.end(), {"--time-budget", budget.str()});
     }
     args.insert(args.end(), {"--hide", fs::absolute(o_.input).string(), "--hide", out_.string()});
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
+    return args;
+  }
 
+  // Starts a6_grade on submission i; false when it could not (its outcome is then set).
+  bool launch(std::size_t i) {
+    Submission& s = inv_.submissions[i];
+    const fs::path dir = out_ / s.key;
+    clearEarlierRun(dir);
+    if (!s.files.empty()) {
+      if (const std::string e = stage(s, dir / "submission"); !e.empty()) {
+        failedToStart(i, "could not stage the files: " + e);
+        return false;
+      }
+    }
+    const std::vector<std::string> args = graderArgs(s, dir);
     const int log = ::open((dir / kLog).c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     const int devnull = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
     if (log < 0 || devnull < 0) {
-      Outcome o;
-      o.status = kGraderError;
-      o.reason = "cannot write " + (dir / kLog).string() + ": " + std::strerror(errno);
-      outcomes_[i] = o;
+      failedToStart(i, "cannot write " + (dir / kLog).string() + ": " + std::strerror(errno));
       if (log >= 0) ::close(log);
       if (devnull >= 0) ::close(devnull);
       return false;
     }
-    // The log opens with the command, so that a TA can run the grading again by hand.
+    logCommand(log, args);
+    const pid_t pid = spawnGrader(args, log, devnull);
+    ::close(log);
+    ::close(devnull);
+    if (pid < 0) {
+      failedToStart(i, std::string("cannot start a6_grade: ") + std::strerror(errno));
+      return false;
+    }
+    setpgid(pid, pid);  // here too: a time limit may kill the group before the child set it
+    const auto now = Clock::now();
+    running_.push_back({i, pid, now,
+                        now + std::chrono::duration_cast<Clock::duration>(
+                                  std::chrono::duration<double>(o_.timeout))});
+    return true;
+  }
+
+  // The log opens with the command, so that a TA can run the grading again by hand.
+  static void logCommand(int log, const std::vector<std::string>& args) {
     std::string command = "a6_batch ran:";
     for (const std::string& a : args) {
       const bool plain = a.find_first_not_of(
@@ -390,42 +430,30 @@ class Batch {
     command += "\n";
     if (write(log, command.data(), command.size()) < 0) {
     }
+  }
+
+  // Forks a6_grade: its own process group, dead with us, default signals, stdin from /dev/null,
+  // its output to the log. Returns its pid, or -1.
+  static pid_t spawnGrader(std::vector<std::string> args, int log, int devnull) {
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
     const pid_t parent = getpid();
     const pid_t pid = fork();
-    if (pid == 0) {
-      // The child: its own process group, dead with us, default signals, output to the log.
-      setpgid(0, 0);
-      prctl(PR_SET_PDEATHSIG, SIGKILL);
-      if (getppid() != parent) _exit(127);
-      std::signal(SIGINT, SIG_DFL);
-      std::signal(SIGTERM, SIG_DFL);
-      std::signal(SIGHUP, SIG_DFL);
-      std::signal(SIGPIPE, SIG_DFL);
-      dup2(devnull, STDIN_FILENO);
-      dup2(log, STDOUT_FILENO);
-      dup2(log, STDERR_FILENO);
-      execv(argv[0], argv.data());
-      const std::string why =
-          std::string("a6_batch: cannot run ") + argv[0] + ": " + std::strerror(errno) + "\n";
-      if (write(STDERR_FILENO, why.data(), why.size()) < 0) {
-      }
-      _exit(127);
+    if (pid != 0) return pid;
+    setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);
+    for (const int signo : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) std::signal(signo, SIG_DFL);
+    dup2(devnull, STDIN_FILENO);
+    dup2(log, STDOUT_FILENO);
+    dup2(log, STDERR_FILENO);
+    execv(argv[0], argv.data());
+    const std::string why =
+        std::string("a6_batch: cannot run ") + argv[0] + ": " + std::strerror(errno) + "\n";
+    if (write(STDERR_FILENO, why.data(), why.size()) < 0) {
     }
-    ::close(log);
-    ::close(devnull);
-    if (pid < 0) {
-      Outcome o;
-      o.status = kGraderError;
-      o.reason = std::string("cannot start a6_grade: ") + std::strerror(errno);
-      outcomes_[i] = o;
-      return false;
-    }
-    setpgid(pid, pid);  // here too: a time limit may kill the group before the child set it
-    const auto now = Clock::now();
-    running_.push_back({i, pid, now,
-                        now + std::chrono::duration_cast<Clock::duration>(
-                                  std::chrono::duration<double>(o_.timeout))});
-    return true;
+    _exit(127);
   }
 
   // a6_grade ended (status from waitpid; none when it vanished): its outcome, the marker, its
@@ -537,21 +565,12 @@ class Batch {
     return lines;
   }
 
-  int summary(double wall, int jobs) {
-    // Counted over every submission's outcome, whichever run graded it.
-    std::map<std::string, int> count;
-    std::vector<double> totals;
-    std::string problems;
-    for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
-      if (!outcomes_[i]) continue;
-      const Outcome& o = *outcomes_[i];
-      ++count[o.status];
-      if (o.total) totals.push_back(*o.total);
-      problems += toLookAt(inv_.submissions[i].key, o);
+  // One line per outcome status with its count, and the skipped ones.
+  void countLines(std::ostringstream& out) const {
+    std::map<std::string, int> count;  // over every outcome, whichever run graded it
+    for (const auto& o : outcomes_) {
+      if (o) ++count[o->status];
     }
-    std::ostringstream out;
-    out << "a6_batch: " << inv_.submissions.size() << " submissions in " << o_.input << " ("
-        << toString(inv_.layout) << " layout), results in " << out_.string() << "\n";
     for (const char* status :
          {kGraded, kBuildFailed, kNotGraded, kGraderError, kTimedOut, kCrashed}) {
       out << "  " << std::left << std::setw(14) << status << std::right << std::setw(5)
@@ -563,6 +582,10 @@ class Batch {
                           "regrades)"
                         : "")
         << "\n";
+  }
+
+  // The batch's wall time, and the mean and longest grading of this run.
+  void timeLine(std::ostringstream& out, double wall, int jobs) const {
     out << "  batch wall time " << duration(wall) << " (" << oneDecimal(wall) << " s) with -j "
         << jobs;
     if (!ranSeconds_.empty()) {
@@ -576,6 +599,31 @@ class Batch {
           << " gradings in this run)";
     }
     out << "\n";
+  }
+
+  // The notes of the inventory, of each submission and of this run.
+  std::vector<std::string> allNotes() const {
+    std::vector<std::string> notes = inv_.notes;
+    for (const Submission& s : inv_.submissions) {
+      for (const std::string& n : s.notes) notes.push_back(s.key + ": " + n);
+    }
+    notes.insert(notes.end(), notes_.begin(), notes_.end());
+    return notes;
+  }
+
+  int summary(double wall, int jobs) {
+    std::vector<double> totals;
+    std::string problems;
+    for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
+      if (!outcomes_[i]) continue;
+      if (outcomes_[i]->total) totals.push_back(*outcomes_[i]->total);
+      problems += toLookAt(inv_.submissions[i].key, *outcomes_[i]);
+    }
+    std::ostringstream out;
+    out << "a6_batch: " << inv_.submissions.size() << " submissions in " << o_.input << " ("
+        << toString(inv_.layout) << " layout), results in " << out_.string() << "\n";
+    countLines(out);
+    timeLine(out, wall, jobs);
     if (!totals.empty()) {
       out << "  totals (points with extra credit) of " << totals.size() << " submissions:\n"
           << histogram(totals);
@@ -585,12 +633,7 @@ class Batch {
              "of time or did not start):\n"
           << problems;
     }
-    std::vector<std::string> notes = inv_.notes;
-    for (const Submission& s : inv_.submissions) {
-      for (const std::string& n : s.notes) notes.push_back(s.key + ": " + n);
-    }
-    notes.insert(notes.end(), notes_.begin(), notes_.end());
-    if (!notes.empty()) {
+    if (const std::vector<std::string> notes = allNotes(); !notes.empty()) {
       out << "  notes:\n";
       for (const std::string& n : notes) out << "    " << n << "\n";
     }
@@ -619,10 +662,9 @@ class Batch {
   std::vector<std::string> notes_;
 };
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  Options options;
+// Reads the command line into `options`; an exit status when the program ends here (--help, or
+// a command line it refuses).
+std::optional<int> parseCommandLine(int argc, char** argv, Options& options) {
   CLI::App app{
       "a6_batch: grades a folder of Assignment 6 submissions, one a6_grade each "
       "(docs/instructor.md, \"Batch grading\")"};
@@ -658,53 +700,92 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 2;
   }
-  auto refuse = [](const std::string& why) {
-    std::fprintf(stderr, "a6_batch: %s\n", why.c_str());
-    return 2;
-  };
+  return std::nullopt;
+}
 
-  // The input, the output, the grader.
+// The input folder, the output folder (created) and the grader, checked; why not, or "".
+std::string checkPaths(const Options& options, fs::path& input, fs::path& out, fs::path& grader) {
   std::error_code ec;
-  const fs::path input = fs::absolute(options.input).lexically_normal();
-  if (!fs::exists(input, ec)) return refuse("no such folder: " + options.input);
+  input = fs::absolute(options.input).lexically_normal();
+  if (!fs::exists(input, ec)) return "no such folder: " + options.input;
   if (!fs::is_directory(input, ec)) {
-    return refuse(options.input +
-                  " is not a folder (unzip an export first; a6_grade grades one "
-                  "archive on its own)");
+    return options.input +
+           " is not a folder (unzip an export first; a6_grade grades one archive on its own)";
   }
-  const fs::path out = fs::absolute(options.out).lexically_normal();
+  out = fs::absolute(options.out).lexically_normal();
   if (fs::exists(out, ec) && fs::equivalent(out, input, ec)) {
-    return refuse("--out must not be the input folder itself");
+    return "--out must not be the input folder itself";
   }
   fs::create_directories(out, ec);
-  if (ec) return refuse("cannot create " + out.string() + ": " + ec.message());
-  const fs::path grader =
-      options.grader.empty() ? besideProgram("a6_grade") : fs::absolute(options.grader);
+  if (ec) return "cannot create " + out.string() + ": " + ec.message();
+  grader = options.grader.empty() ? besideProgram("a6_grade") : fs::absolute(options.grader);
   if (access(grader.c_str(), X_OK) != 0) {
-    return refuse("cannot run the grader " + grader.string() +
-                  " (build a6_grade beside a6_batch, or give --grader)");
+    return "cannot run the grader " + grader.string() +
+           " (build a6_grade beside a6_batch, or give --grader)";
   }
-  if (!options.rubric.empty() && !fs::is_regular_file(options.rubric, ec)) {
-    return refuse("no rubric file " + options.rubric);
-  }
-  // A rubric that cannot be used would fail every grading: said now, before any.
-  if (!options.rubric.empty()) {
-    if (std::string problems = rubricProblems(grader, fs::absolute(options.rubric));
-        !problems.empty()) {
-      while (!problems.empty() && problems.back() == '\n') problems.pop_back();
-      return refuse("the rubric " + options.rubric + " cannot be used:\n" + problems);
-    }
-  }
+  return "";
+}
 
-  // One batch at a time per output folder (a second would grade the same students at once).
+// A rubric that cannot be used would fail every grading: said now, before any. Why, or "".
+std::string checkRubric(const Options& options, const fs::path& grader) {
+  if (options.rubric.empty()) return "";
+  std::error_code ec;
+  if (!fs::is_regular_file(options.rubric, ec)) return "no rubric file " + options.rubric;
+  std::string problems = rubricProblems(grader, fs::absolute(options.rubric));
+  if (problems.empty()) return "";
+  while (!problems.empty() && problems.back() == '\n') problems.pop_back();
+  return "the rubric " + options.rubric + " cannot be used:\n" + problems;
+}
+
+// One batch at a time per output folder (a second would grade the same students at once): the
+// lock is held until the process ends. Why not, or "".
+std::string lockOutput(const fs::path& out) {
   const fs::path lockFile = out / ".a6_batch.lock";
   const int lock = ::open(lockFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0) {
-    return refuse("another a6_batch is writing to " + out.string() + " (" + lockFile.string() +
-                  ")");
+    return "another a6_batch is writing to " + out.string() + " (" + lockFile.string() + ")";
   }
+  return "";
+}
 
-  // The submissions.
+// What else decides a grade, for the fingerprints: a change regrades.
+std::string decidingOptions(const Options& options) {
+  std::ostringstream decides;
+  const fs::path rubric =
+      options.rubric.empty() ? fs::path(A6_DEFAULT_RUBRIC) : fs::path(options.rubric);
+  decides << "rubric=" << (rubric.empty() ? std::string("default") : readAll(rubric)) << "\n"
+          << "seed=" << (options.seed ? std::to_string(*options.seed) : "default") << "\n"
+          << "time-budget="
+          << (options.timeBudget ? std::to_string(*options.timeBudget) : "default") << "\n";
+  return decides.str();
+}
+
+// Signals only set the flag the loop reads; whatever a dead a6_grade's processes leave is
+// re-parented here, to be killed.
+void catchSignals() {
+  std::signal(SIGPIPE, SIG_IGN);
+  struct sigaction action {};
+  action.sa_handler = onSignal;
+  sigemptyset(&action.sa_mask);
+  for (const int signo : {SIGINT, SIGTERM, SIGHUP}) sigaction(signo, &action, nullptr);
+  prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
+}
+
+int refuse(const std::string& why) {
+  std::fprintf(stderr, "a6_batch: %s\n", why.c_str());
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const std::optional<int> status = parseCommandLine(argc, argv, options)) return *status;
+  fs::path input, out, grader;
+  if (std::string why = checkPaths(options, input, out, grader); !why.empty()) return refuse(why);
+  if (std::string why = checkRubric(options, grader); !why.empty()) return refuse(why);
+  if (std::string why = lockOutput(out); !why.empty()) return refuse(why);
+
   const Layout layout =
       options.layout.empty() ? detectLayout(input, out) : *layoutNamed(options.layout);
   Inventory inventory = findSubmissions(input, layout, out);
@@ -714,28 +795,11 @@ int main(int argc, char** argv) {
     return refuse("no submission found in " + options.input + " (read as the " + toString(layout) +
                   " layout; --layout chooses another)");
   }
-
-  // What else decides a grade, for the fingerprints: a change regrades.
-  std::ostringstream decides;
-  const fs::path rubric =
-      options.rubric.empty() ? fs::path(A6_DEFAULT_RUBRIC) : fs::path(options.rubric);
-  decides << "rubric=" << (rubric.empty() ? std::string("default") : readAll(rubric)) << "\n"
-          << "seed=" << (options.seed ? std::to_string(*options.seed) : "default") << "\n"
-          << "time-budget="
-          << (options.timeBudget ? std::to_string(*options.timeBudget) : "default") << "\n";
-
-  std::signal(SIGPIPE, SIG_IGN);
-  struct sigaction action {};
-  action.sa_handler = onSignal;
-  sigemptyset(&action.sa_mask);
-  for (const int signo : {SIGINT, SIGTERM, SIGHUP}) sigaction(signo, &action, nullptr);
-  // Whatever a dead a6_grade's processes leave is re-parented here, to be killed.
-  prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
-
+  catchSignals();
   options.input = input.string();
   const int jobs = options.jobs > 0
                        ? options.jobs
                        : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  Batch batch(options, std::move(inventory), out, grader, decides.str(), jobs);
+  Batch batch(options, std::move(inventory), out, grader, decidingOptions(options), jobs);
   return batch.run();
 }

@@ -249,61 +249,105 @@ std::vector<std::string> linkCommand(const Kit& kit, const std::vector<std::stri
   return argv;
 }
 
+// After a6_probe linked in linkDir: moves it into workDir and links the second probe, the same
+// objects with the reference models' main.
+void linkedProbes(const Kit& kit, Build& build, const std::vector<fs::path>& objects,
+                  const fs::path& workDir, const ToolRunner& run) {
+  std::error_code ec;
+  const fs::path linkDir = workDir / "link";
+  build.probe = workDir / "a6_probe";
+  fs::rename(linkDir / "a6_probe", build.probe, ec);
+  if (ec) {
+    build.error = "cannot move the linked probe to " + build.probe.string() + ": " + ec.message();
+    return;
+  }
+  const Exit m = run(linkDir, linkCommand(kit, kit.modelsMain, objects, "a6_probe_models"));
+  build.modelsProbe = workDir / "a6_probe_models";
+  fs::rename(linkDir / "a6_probe_models", build.modelsProbe, ec);
+  if (!m.ok() || ec) {
+    build.error = "the probe linked, but not with the reference models' main (the linker " +
+                  m.describe() + "): the grader kit is broken, rebuild it. The linker said:\n" +
+                  cap(m.output, 8u << 10);
+  }
+}
+
+// The tasks whose objects a failed link is blamed on, first blamed first: the student objects
+// the linker names (in the order it names them), then those whose starter defines a symbol the
+// linker found undefined.
+std::vector<std::size_t> blamedForLink(const Kit& kit, const Build& build,
+                                       const std::vector<fs::path>& objects,
+                                       const std::string& linkerOutput) {
+  std::vector<std::pair<std::size_t, std::size_t>> blamed;  // (position in output, task)
+  const auto undefined = undefinedSymbols(linkerOutput);
+  for (std::size_t i = 0; i < build.tasks.size(); ++i) {
+    if (build.tasks[i].status != TaskBuild::Status::Compiled) continue;
+    const std::size_t pos = linkerOutput.find(objects[i].string());
+    if (pos != std::string::npos) {
+      blamed.emplace_back(pos, i);
+      continue;
+    }
+    const auto defined = readSymbols(kit.starterObjects / (stem(kTaskFiles[i]) + ".syms"));
+    if (std::any_of(undefined.begin(), undefined.end(),
+                    [&](const std::string& symbol) { return defined.count(symbol) > 0; })) {
+      blamed.emplace_back(linkerOutput.size(), i);
+    }
+  }
+  std::sort(blamed.begin(), blamed.end());
+  std::vector<std::size_t> tasks;
+  for (const auto& b : blamed) tasks.push_back(b.second);
+  return tasks;
+}
+
+// What the linker said, with the grader's paths cut to names a student can read.
+std::string linkerSaid(const Kit& kit, const fs::path& workDir, const std::string& output) {
+  std::string said = replaceAll(output, workDir.string() + "/obj/", "");
+  said = replaceAll(said, absoluteClean(kit.dir).string() + "/", "kit/");
+  for (const auto* inputs : {&kit.probeMain, &kit.modelsMain, &kit.linkInputs}) {
+    for (const std::string& input : *inputs) {
+      if (!input.empty() && input[0] == '/') {
+        said = replaceAll(said, input, fs::path(input).filename().string());
+      }
+    }
+  }
+  for (const fs::path& secret : kit.secrets) {
+    said = replaceAll(said, absoluteClean(secret).string() + "/", "");
+  }
+  return cap(said, 8u << 10);
+}
+
+// Task i is linked with the starter's object from now on, and its messages say why.
+void useStarterObject(const Kit& kit, Build& build, std::vector<fs::path>& objects, std::size_t i,
+                      bool wholeSubmission, const std::string& said) {
+  TaskBuild& task = build.tasks[i];
+  task.status = TaskBuild::Status::LinkError;
+  task.messages += task.file + " compiled, but the probe " +
+                   (wholeSubmission ? std::string("did not link with the submission's objects")
+                                    : "did not link with its object") +
+                   " (does it define main(), or a function the framework defines, or "
+                   "did it rename a function the framework calls?): task " +
+                   std::to_string(i + 1) +
+                   " is graded with the starter's stub. The linker said:\n" + said;
+  objects[i] = kit.starterObjects / (stem(task.file) + ".o");
+}
+
 // Links workDir/a6_probe from `objects` (one per task, in task order): a student object that keeps
 // it from linking is replaced by the starter's (its task becomes a LinkError), until it links.
 void linkProbe(const Kit& kit, Build& build, std::vector<fs::path>& objects,
                const fs::path& workDir, const ToolRunner& run) {
   std::error_code ec;
   const fs::path linkDir = workDir / "link";
-  const std::string kitDir = absoluteClean(kit.dir).string() + "/";
   const auto linkStart = Clock::now();
   for (;;) {
     const Exit e = run(linkDir, linkCommand(kit, kit.probeMain, objects, "a6_probe"));
     if (e.ok() && fs::is_regular_file(linkDir / "a6_probe", ec)) {
-      build.probe = workDir / "a6_probe";
-      fs::rename(linkDir / "a6_probe", build.probe, ec);
-      if (ec) {
-        build.error =
-            "cannot move the linked probe to " + build.probe.string() + ": " + ec.message();
-        break;
-      }
-      // The second probe: the objects that linked, with the reference models' main.
-      const Exit m = run(linkDir, linkCommand(kit, kit.modelsMain, objects, "a6_probe_models"));
-      build.modelsProbe = workDir / "a6_probe_models";
-      fs::rename(linkDir / "a6_probe_models", build.modelsProbe, ec);
-      if (!m.ok() || ec) {
-        build.error = "the probe linked, but not with the reference models' main (the linker " +
-                      m.describe() + "): the grader kit is broken, rebuild it. The linker said:\n" +
-                      cap(m.output, 8u << 10);
-      }
+      linkedProbes(kit, build, objects, workDir, run);
       break;
     }
-    // Who is to blame: the student objects the linker names (in the order it names them), then
-    // those whose starter defines a symbol the linker found undefined.
-    std::vector<std::pair<std::size_t, std::size_t>> blamed;  // (position in output, task)
-    const auto undefined = undefinedSymbols(e.output);
-    for (std::size_t i = 0; i < build.tasks.size(); ++i) {
-      if (build.tasks[i].status != TaskBuild::Status::Compiled) continue;
-      const std::size_t pos = e.output.find(objects[i].string());
-      if (pos != std::string::npos) {
-        blamed.emplace_back(pos, i);
-        continue;
-      }
-      const auto defined = readSymbols(kit.starterObjects / (stem(kTaskFiles[i]) + ".syms"));
-      for (const std::string& symbol : undefined) {
-        if (defined.count(symbol)) {
-          blamed.emplace_back(e.output.size(), i);
-          break;
-        }
-      }
-    }
-    std::sort(blamed.begin(), blamed.end());
-    bool lastResort = false;
-    if (blamed.empty()) {
-      for (std::size_t i = 0; i < build.tasks.size(); ++i) {
-        if (build.tasks[i].status == TaskBuild::Status::Compiled) blamed.emplace_back(0, i);
-      }
-      lastResort = true;
+    std::vector<std::size_t> blamed = blamedForLink(kit, build, objects, e.output);
+    // As a last resort, every student object at once.
+    const bool lastResort = blamed.empty();
+    for (std::size_t i = 0; lastResort && i < build.tasks.size(); ++i) {
+      if (build.tasks[i].status == TaskBuild::Status::Compiled) blamed.push_back(i);
     }
     if (blamed.empty()) {
       build.error = "the probe does not link even with the starter's objects (the linker " +
@@ -313,32 +357,9 @@ void linkProbe(const Kit& kit, Build& build, std::vector<fs::path>& objects,
                     cap(e.output, 16u << 10);
       break;
     }
-    // One at a time: the first one blamed (as a last resort, every student object).
-    std::string said = replaceAll(e.output, workDir.string() + "/obj/", "");
-    said = replaceAll(said, kitDir, "kit/");
-    for (const auto* inputs : {&kit.probeMain, &kit.modelsMain, &kit.linkInputs}) {
-      for (const std::string& input : *inputs) {
-        if (!input.empty() && input[0] == '/') {
-          said = replaceAll(said, input, fs::path(input).filename().string());
-        }
-      }
-    }
-    for (const fs::path& secret : kit.secrets) {
-      said = replaceAll(said, absoluteClean(secret).string() + "/", "");
-    }
-    said = cap(said, 8u << 10);
+    const std::string said = linkerSaid(kit, workDir, e.output);
     for (std::size_t k = 0; k < (lastResort ? blamed.size() : 1); ++k) {
-      const std::size_t i = blamed[k].second;
-      TaskBuild& task = build.tasks[i];
-      task.status = TaskBuild::Status::LinkError;
-      task.messages += task.file + " compiled, but the probe " +
-                       (lastResort ? std::string("did not link with the submission's objects")
-                                   : "did not link with its object") +
-                       " (does it define main(), or a function the framework defines, or "
-                       "did it rename a function the framework calls?): task " +
-                       std::to_string(i + 1) +
-                       " is graded with the starter's stub. The linker said:\n" + said;
-      objects[i] = kit.starterObjects / (stem(task.file) + ".o");
+      useStarterObject(kit, build, objects, blamed[k], lastResort, said);
     }
   }
   build.linkSeconds = secondsSince(linkStart);
@@ -409,137 +430,183 @@ std::string kitUnreadableInSandbox(const Kit& kit, const fs::path& workDir) {
 
 namespace {
 
-Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& workDirIn,
-                          const Limits& compileLimits, int jobs, double budgetSeconds) {
-  Build build;
-  const auto start = Clock::now();
-  if (!kit.ok()) {
-    build.error = "no grader kit: " + kit.error;
-    return build;
-  }
+// Makes workDir/obj, open to the sandbox's user (the compiler runs as nobody and must reach
+// it). Returns an error, or "".
+std::string makeWorkDir(const fs::path& workDir) {
   std::error_code ec;
-  const fs::path workDir = absoluteClean(workDirIn);
   fs::create_directories(workDir / "obj", ec);
-  if (ec) {
-    build.error = "cannot create the work folder " + workDir.string() + ": " + ec.message();
-    return build;
-  }
-  // The sandbox runs the compiler as another user (nobody): it must reach the work folder.
+  if (ec) return "cannot create the work folder " + workDir.string() + ": " + ec.message();
   const auto open = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                     fs::perms::others_read | fs::perms::others_exec;
   fs::permissions(workDir, open, ec);
   fs::permissions(workDir / "obj", open, ec);
+  return "";
+}
 
-  std::vector<fs::path> sources;
-  for (const auto& [name, path] : intake.files)
-    sources.push_back(absoluteClean(path).parent_path());
-  const SandboxView compileView = viewOfTools(kit, workDir, sources, false);
-  const SandboxView linkView = viewOfTools(kit, workDir, sources, true);
-  std::mutex notesMutex;
-  const auto wholeEnd = start + std::chrono::duration_cast<Clock::duration>(
-                                    std::chrono::duration<double>(budgetSeconds));
-  auto run = [&](const fs::path& dir, std::vector<std::string> argv) {
-    // Every compile within what is left of the build's budget (a link gets at least 10 s).
-    Limits limits = compileLimits;
-    const double left = std::chrono::duration<double>(wholeEnd - Clock::now()).count();
-    limits.wallSeconds =
-        std::max(dir.filename() == "link" ? 10.0 : 1.0, std::min(limits.wallSeconds, left));
+// One build of one submission's probe: compiles each task file alone (`jobs` at a time), each
+// within what is left of the build's time budget, then links.
+class ProbeBuilder {
+ public:
+  ProbeBuilder(const Kit& kit, const Intake& intake, const fs::path& workDir,
+               const Limits& compileLimits, double budgetSeconds)
+      : kit_(kit),
+        intake_(intake),
+        workDir_(workDir),
+        compileLimits_(compileLimits),
+        budgetSeconds_(budgetSeconds),
+        end_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                std::chrono::duration<double>(budgetSeconds))),
+        compileView_(viewOfTools(kit, workDir, sourceDirs(intake), false)),
+        linkView_(viewOfTools(kit, workDir, sourceDirs(intake), true)),
+        objects_(kTaskFiles.size()) {
+    build_.tasks.resize(kTaskFiles.size());
+  }
+
+  Build run(int jobs) {
+    compileAll(jobs);
+    linkProbe(kit_, build_, objects_, workDir_,
+              [this](const fs::path& dir, std::vector<std::string> argv) {
+                return runInBudget(dir, std::move(argv));
+              });
+    return std::move(build_);
+  }
+
+ private:
+  static std::vector<fs::path> sourceDirs(const Intake& intake) {
+    std::vector<fs::path> dirs;
+    for (const auto& [name, path] : intake.files) {
+      dirs.push_back(absoluteClean(path).parent_path());
+    }
+    return dirs;
+  }
+
+  // Runs the compiler or linker in `dir`, within what is left of the budget (a link gets at
+  // least 10 s); the sandbox's notes join the build's, once each.
+  Exit runInBudget(const fs::path& dir, std::vector<std::string> argv) {
     const bool link = dir.filename() == "link";
-    Exit e = runTool(kit, link ? linkView : compileView, dir, std::move(argv), limits);
-    std::lock_guard<std::mutex> lock(notesMutex);
+    Limits limits = compileLimits_;
+    const double left = std::chrono::duration<double>(end_ - Clock::now()).count();
+    limits.wallSeconds = std::max(link ? 10.0 : 1.0, std::min(limits.wallSeconds, left));
+    Exit e = runTool(kit_, link ? linkView_ : compileView_, dir, std::move(argv), limits);
+    std::lock_guard<std::mutex> lock(notesMutex_);
     for (const std::string& n : e.notes) {
-      if (std::find(build.notes.begin(), build.notes.end(), n) == build.notes.end()) {
-        build.notes.push_back(n);
+      if (std::find(build_.notes.begin(), build_.notes.end(), n) == build_.notes.end()) {
+        build_.notes.push_back(n);
       }
     }
     return e;
-  };
-  const std::string kitDir = absoluteClean(kit.dir).string() + "/";
+  }
 
-  // 1. Each file alone (`jobs` at a time).
-  build.tasks.resize(kTaskFiles.size());
-  std::vector<fs::path> objects(kTaskFiles.size());  // the object linked for each task
-  auto compile = [&](std::size_t i) {
-    const std::string& file = kTaskFiles[i];
-    TaskBuild& task = build.tasks[i];
-    task.file = file;
-    const fs::path starter = kit.starterObjects / (stem(file) + ".o");
-    objects[i] = starter;
-    std::error_code fec;
-    auto found = intake.files.find(file);
-    if (found == intake.files.end() || !fs::is_regular_file(found->second, fec)) {
+  void compileAll(int jobs) {
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      for (std::size_t i; (i = next++) < kTaskFiles.size();) compile(i);
+    };
+    std::vector<std::thread> workers;
+    try {
+      for (int k = 1; k < std::max(1, jobs); ++k) workers.emplace_back(worker);
+    } catch (const std::system_error&) {
+      // No more threads: the ones started and this one do the rest.
+    }
+    worker();
+    for (std::thread& t : workers) t.join();
+  }
+
+  std::string stub(std::size_t i) const {
+    return "task " + std::to_string(i + 1) + " is graded with the starter's stub.\n";
+  }
+
+  // Compiles task i's file alone; its task keeps the starter's object unless it compiles.
+  void compile(std::size_t i) {
+    TaskBuild& task = build_.tasks[i];
+    task.file = kTaskFiles[i];
+    objects_[i] = kit_.starterObjects / (stem(task.file) + ".o");
+    std::error_code ec;
+    auto found = intake_.files.find(task.file);
+    if (found == intake_.files.end() || !fs::is_regular_file(found->second, ec)) {
       task.status = TaskBuild::Status::Missing;
-      task.messages = file + " is not in the submission: task " + std::to_string(i + 1) +
-                      " is graded with the starter's stub.\n";
+      task.messages = task.file + " is not in the submission: " + stub(i);
+      return;
+    }
+    if (Clock::now() >= end_) {
+      task.status = TaskBuild::Status::TimedOut;
+      task.messages =
+          "The build's time budget (" + std::to_string(static_cast<int>(budgetSeconds_)) +
+          " s for all files) was used up before " + task.file + " was compiled: " + stub(i);
       return;
     }
     const fs::path source = absoluteClean(found->second);
-    const fs::path dir = workDir / "obj" / stem(file);
-    if (Clock::now() >= wholeEnd) {
-      task.status = TaskBuild::Status::TimedOut;
-      task.messages = "The build's time budget (" +
-                      std::to_string(static_cast<int>(budgetSeconds)) +
-                      " s for all files) was used up before " + file + " was compiled: task " +
-                      std::to_string(i + 1) + " is graded with the starter's stub.\n";
-      return;
-    }
-    std::vector<std::string> argv = {kit.compiler};
-    argv.insert(argv.end(), kit.compileFlags.begin(), kit.compileFlags.end());
-    argv.insert(argv.end(), {"-c", source.string(), "-o", stem(file) + ".o"});
+    std::vector<std::string> argv = {kit_.compiler};
+    argv.insert(argv.end(), kit_.compileFlags.begin(), kit_.compileFlags.end());
+    argv.insert(argv.end(), {"-c", source.string(), "-o", stem(task.file) + ".o"});
     const auto t0 = Clock::now();
-    const Exit e = run(dir, argv);
+    const Exit e = runInBudget(workDir_ / "obj" / stem(task.file), argv);
     task.seconds = secondsSince(t0);
+    judge(i, source, e);
+  }
+
+  // Task i's status and messages from what the compiler did.
+  void judge(std::size_t i, const fs::path& source, const Exit& e) {
+    TaskBuild& task = build_.tasks[i];
     // Messages name the file as the student knows it, and the headers as a6/... .
     std::string said = replaceAll(e.output, source.parent_path().string() + "/", "");
-    said = replaceAll(said, kitDir + "include/", "");
+    said = replaceAll(said, absoluteClean(kit_.dir).string() + "/include/", "");
     task.messages = cap(said, 32u << 10);
     if (e.outputTruncated) task.messages += "[... the compiler's output was cut]\n";
-    const fs::path object = dir / (stem(file) + ".o");
+    const fs::path object = workDir_ / "obj" / stem(task.file) / (stem(task.file) + ".o");
+    std::error_code ec;
     if (e.kind == Exit::Kind::TimedOut) {
       task.status = TaskBuild::Status::TimedOut;
-      task.messages += "The compiler did not finish " + file + " within " +
+      task.messages += "The compiler did not finish " + task.file + " within " +
                        std::to_string(static_cast<int>(e.wallSeconds + 0.5)) + " s (" +
-                       std::to_string(static_cast<int>(compileLimits.wallSeconds)) + " s a file, " +
-                       std::to_string(static_cast<int>(budgetSeconds)) +
-                       " s for the whole build): task " + std::to_string(i + 1) +
-                       " is graded with the starter's stub.\n";
-    } else if (e.ok() && fs::is_regular_file(object, fec)) {
-      if (const std::string early = runsBeforeFilter(object); !early.empty()) {
-        task.status = TaskBuild::Status::LinkError;
-        task.messages += file + " compiled, but its object holds " + early +
-                         ": code that would run before the grader's protections are on. Task " +
-                         std::to_string(i + 1) + " is graded with the starter's stub.\n";
-        return;
-      }
-      task.status = TaskBuild::Status::Compiled;
-      task.object = object;
-      objects[i] = object;
-    } else {
+                       std::to_string(static_cast<int>(compileLimits_.wallSeconds)) +
+                       " s a file, " + std::to_string(static_cast<int>(budgetSeconds_)) +
+                       " s for the whole build): " + stub(i);
+    } else if (!e.ok() || !fs::is_regular_file(object, ec)) {
       task.status = TaskBuild::Status::CompileError;
       if (said.find("virtual memory exhausted") != std::string::npos ||
           said.find("out of memory") != std::string::npos) {
         task.messages += "The compiler ran out of its " +
-                         std::to_string(compileLimits.memoryBytes >> 20) + " MiB of memory.\n";
+                         std::to_string(compileLimits_.memoryBytes >> 20) + " MiB of memory.\n";
       }
-      task.messages += file + " did not compile (the compiler " + e.describe() + "): task " +
+      task.messages +=
+          task.file + " did not compile (the compiler " + e.describe() + "): " + stub(i);
+    } else if (const std::string early = runsBeforeFilter(object); !early.empty()) {
+      task.status = TaskBuild::Status::LinkError;
+      task.messages += task.file + " compiled, but its object holds " + early +
+                       ": code that would run before the grader's protections are on. Task " +
                        std::to_string(i + 1) + " is graded with the starter's stub.\n";
+    } else {
+      task.status = TaskBuild::Status::Compiled;
+      task.object = object;
+      objects_[i] = object;
     }
-  };
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i; (i = next++) < kTaskFiles.size();) compile(i);
-  };
-  std::vector<std::thread> workers;
-  try {
-    for (int k = 1; k < std::max(1, jobs); ++k) workers.emplace_back(worker);
-  } catch (const std::system_error&) {
-    // No more threads: the ones started and this one do the rest.
   }
-  worker();
-  for (std::thread& t : workers) t.join();
 
-  // 2. The link; a student object that keeps it from linking is replaced by the starter's.
-  linkProbe(kit, build, objects, workDir, run);
+  const Kit& kit_;
+  const Intake& intake_;
+  const fs::path workDir_;
+  const Limits compileLimits_;
+  const double budgetSeconds_;
+  const Clock::time_point end_;
+  const SandboxView compileView_, linkView_;
+  Build build_;
+  std::vector<fs::path> objects_;  // the object linked for each task
+  std::mutex notesMutex_;
+};
+
+Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& workDirIn,
+                          const Limits& compileLimits, int jobs, double budgetSeconds) {
+  const auto start = Clock::now();
+  Build build;
+  const fs::path workDir = absoluteClean(workDirIn);
+  if (!kit.ok()) {
+    build.error = "no grader kit: " + kit.error;
+  } else if (std::string e = makeWorkDir(workDir); !e.empty()) {
+    build.error = e;
+  } else {
+    build = ProbeBuilder(kit, intake, workDir, compileLimits, budgetSeconds).run(jobs);
+  }
   build.seconds = secondsSince(start);
   return build;
 }

@@ -213,6 +213,28 @@ class Collector {
   Intake finish(const fs::path& dest, const std::string& what, bool anyEntries,
                 bool sawNestedArchive) {
     Intake out;
+    if (!makeDest(dest, out)) return out;
+    for (const std::string& name : kTaskFiles) {
+      // A stale copy from an earlier run must never be mistaken for this submission's file.
+      std::error_code ec;
+      fs::remove(dest / name, ec);
+      auto it = chosen_.find(name);
+      if (it == chosen_.end()) continue;
+      if (!write(dest / name, it->second, out)) return out;
+      out.files[name] = dest / name;
+      noteDuplicates(name, it->second.path);
+    }
+    closingNotes(what, anyEntries, sawNestedArchive, out);
+    out.notes = std::move(notes_);
+    return out;
+  }
+
+  const IntakeLimits& limits() const { return limits_; }
+  bool anyChosen() const { return !chosen_.empty(); }
+
+ private:
+  // Creates dest, readable by the sandbox's user. False (with out.error) when it cannot.
+  static bool makeDest(const fs::path& dest, Intake& out) {
     std::error_code ec;
     fs::create_directories(dest, ec);
     if (ec) {
@@ -220,51 +242,58 @@ class Collector {
                   " for the submission's files: " + ec.message() +
                   " (check that the output folder is writable)";
       out.graderFault = true;
-      return out;
+      return false;
     }
     fs::permissions(dest,
                     fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                         fs::perms::others_read | fs::perms::others_exec,
                     ec);
-    for (const std::string& name : kTaskFiles) {
-      // A stale copy from an earlier run must never be mistaken for this submission's file.
-      fs::remove(dest / name, ec);
-      auto it = chosen_.find(name);
-      if (it == chosen_.end()) continue;
-      const Copy& copy = it->second;
-      const fs::path target = dest / name;
-      {
-        std::ofstream file(target, std::ios::binary | std::ios::trunc);
-        file.write(copy.data.data(), static_cast<std::streamsize>(copy.data.size()));
-        if (!file) {
-          out.error = "cannot write " + target.string() + ": " + std::strerror(errno) +
-                      " (check the output folder: disk full or not writable?)";
-          out.graderFault = true;
-          return out;
-        }
-      }
-      fs::permissions(target,
-                      fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
-                          fs::perms::others_read,
-                      ec);
-      out.files[name] = target;
-      if (!validUtf8(copy.data)) {
-        note(shownPath(copy.path) +
-             ": not valid UTF-8 text (taken anyway; if the compiler "
-             "rejects a character, save the file as UTF-8)");
-      }
-      auto& paths = seen_[name];
-      std::sort(paths.begin(), paths.end());
-      paths.erase(std::unique(paths.begin(), paths.end()), paths.end());
-      if (paths.size() > 1) {
-        std::string others;
-        for (const std::string& p : paths) {
-          if (p != copy.path) others += (others.empty() ? "" : ", ") + shownPath(p);
-        }
-        note(name + ": " + std::to_string(paths.size()) + " copies found; took " +
-             shownPath(copy.path) + " (the shallowest copy wins), ignored " + others);
+    return true;
+  }
+
+  // Writes one chosen copy to `target`, readable by all; notes text that is not UTF-8.
+  // False (with out.error) when it cannot be written.
+  bool write(const fs::path& target, const Copy& copy, Intake& out) {
+    {
+      std::ofstream file(target, std::ios::binary | std::ios::trunc);
+      file.write(copy.data.data(), static_cast<std::streamsize>(copy.data.size()));
+      if (!file) {
+        out.error = "cannot write " + target.string() + ": " + std::strerror(errno) +
+                    " (check the output folder: disk full or not writable?)";
+        out.graderFault = true;
+        return false;
       }
     }
+    std::error_code ec;
+    fs::permissions(target,
+                    fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                        fs::perms::others_read,
+                    ec);
+    if (!validUtf8(copy.data)) {
+      note(shownPath(copy.path) +
+           ": not valid UTF-8 text (taken anyway; if the compiler "
+           "rejects a character, save the file as UTF-8)");
+    }
+    return true;
+  }
+
+  // When `name` was found more than once: which copy was taken and which were not.
+  void noteDuplicates(const std::string& name, const std::string& taken) {
+    auto& paths = seen_[name];
+    std::sort(paths.begin(), paths.end());
+    paths.erase(std::unique(paths.begin(), paths.end()), paths.end());
+    if (paths.size() <= 1) return;
+    std::string others;
+    for (const std::string& p : paths) {
+      if (p != taken) others += (others.empty() ? "" : ", ") + shownPath(p);
+    }
+    note(name + ": " + std::to_string(paths.size()) + " copies found; took " + shownPath(taken) +
+         " (the shallowest copy wins), ignored " + others);
+  }
+
+  // The notes about the whole submission: skipped entries not listed, nothing found.
+  void closingNotes(const std::string& what, bool anyEntries, bool sawNestedArchive,
+                    const Intake& out) {
     if (entryNotes_ > kMaxEntryNotes) {
       note(std::to_string(entryNotes_ - kMaxEntryNotes) + " more skipped entries are not listed");
     }
@@ -278,14 +307,8 @@ class Collector {
                                ".cpp files themselves"
                              : ""));
     }
-    out.notes = std::move(notes_);
-    return out;
   }
 
-  const IntakeLimits& limits() const { return limits_; }
-  bool anyChosen() const { return !chosen_.empty(); }
-
- private:
   const IntakeLimits& limits_;
   std::map<std::string, Copy> chosen_;
   std::map<std::string, std::vector<std::string>> seen_;
@@ -671,6 +694,65 @@ std::optional<std::string> readNoFollow(const fs::path& path, std::size_t cap, s
   return data;
 }
 
+// Whether the walk of a folder stops before its next entry (a read error, or the entry limit),
+// with the note saying why.
+bool folderWalkEnds(Collector& c, const std::error_code& ec, std::size_t entries,
+                    const IntakeLimits& limits) {
+  if (ec) {
+    c.note("the folder could not be read completely (" + ec.message() +
+           "); only the task files found before that point are used");
+    return true;
+  }
+  if (entries > limits.maxEntries) {
+    c.note("reading stopped after " + std::to_string(limits.maxEntries) +
+           " entries (the limit): the folder holds too many files; the rest was not looked "
+           "at");
+    return true;
+  }
+  return false;
+}
+
+// Whether the walk looks into the folder at `it`: never the grader's own output folder
+// (`destAbs`), nor one deeper than the limit (noted).
+bool looksInto(Collector& c, fs::recursive_directory_iterator& it, const fs::path& destAbs,
+               const std::string& rel, std::size_t depth, const IntakeLimits& limits) {
+  std::error_code ec;
+  if (fs::equivalent(it->path(), destAbs, ec)) {
+    it.disable_recursion_pending();
+    return false;
+  }
+  if (static_cast<int>(depth) >= limits.maxDepth) {
+    it.disable_recursion_pending();
+    c.entryNote(shownPath(rel) + ": not looked into: " + std::to_string(depth) +
+                " levels deep, the limit is " + std::to_string(limits.maxDepth));
+    return false;
+  }
+  return true;
+}
+
+// Reads the copy of task file `name` at `path` (`relStr` in the submission) and offers it,
+// unless it is too large or a better copy was already taken.
+void takeFolderCopy(Collector& c, const fs::path& path, const std::string& name,
+                    const std::string& relStr, std::size_t depth, const IntakeLimits& limits) {
+  c.seen(name, relStr);
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  if (!ec && size > limits.maxFileBytes) {
+    c.entryNote(tooLarge(relStr, size, limits, false));
+    return;
+  }
+  if (!c.wanted(name, relStr, depth)) return;
+  std::string why;
+  auto data = readNoFollow(path, limits.maxFileBytes, why);
+  if (!data) {
+    c.entryNote(shownPath(relStr) + ": refused: cannot be read (" + why + ")");
+  } else if (data->size() > limits.maxFileBytes) {
+    c.entryNote(tooLarge(relStr, limits.maxFileBytes, limits, true));
+  } else {
+    c.offer(name, relStr, depth, std::move(*data));
+  }
+}
+
 Intake readFolder(const fs::path& root, const fs::path& dest, const IntakeLimits& limits) {
   Collector c(limits);
   bool anyEntries = false, sawNested = false;
@@ -686,60 +768,20 @@ Intake readFolder(const fs::path& root, const fs::path& dest, const IntakeLimits
     return out;
   }
   for (; it != fs::recursive_directory_iterator(); it.increment(ec)) {
-    if (ec) {
-      c.note("the folder could not be read completely (" + ec.message() +
-             "); only the task files found before that point are used");
-      break;
-    }
-    if (++entries > limits.maxEntries) {
-      c.note("reading stopped after " + std::to_string(limits.maxEntries) +
-             " entries (the limit): the folder holds too many files; the rest was not looked "
-             "at");
-      break;
-    }
+    if (folderWalkEnds(c, ec, ++entries, limits)) break;
     anyEntries = true;
     const fs::path path = it->path();
-    const fs::path rel = path.lexically_relative(root);
-    const EntryPath p = splitPath(rel.generic_string());
+    const std::string rel = path.lexically_relative(root).generic_string();
+    const EntryPath p = splitPath(rel);
     std::error_code sec;
-    const fs::file_status st = fs::symlink_status(path, sec);
-    Kind kind = kindOf(st.type());
-    if (kind == Kind::Directory) {
-      if (fs::equivalent(path, destAbs, sec)) {
-        it.disable_recursion_pending();
-        continue;
-      }
-      if (static_cast<int>(p.parts.size()) >= limits.maxDepth) {
-        it.disable_recursion_pending();
-        c.entryNote(shownPath(rel.generic_string()) +
-                    ": not looked into: " + std::to_string(p.parts.size()) +
-                    " levels deep, the limit is " + std::to_string(limits.maxDepth));
-        continue;
-      }
-    }
-    std::string target;
-    if (kind == Kind::Symlink) target = fs::read_symlink(path, sec).string();
-    const std::string name = screen(c, rel.generic_string(), p, kind, target, sawNested);
-    if (name.empty()) continue;
-    const std::string relStr = joinPath(p.parts);
-    c.seen(name, relStr);
-    const auto size = fs::file_size(path, sec);
-    if (!sec && size > limits.maxFileBytes) {
-      c.entryNote(tooLarge(relStr, size, limits, false));
+    const Kind kind = kindOf(fs::symlink_status(path, sec).type());
+    if (kind == Kind::Directory && !looksInto(c, it, destAbs, rel, p.parts.size(), limits)) {
       continue;
     }
-    if (!c.wanted(name, relStr, p.parts.size())) continue;
-    std::string why;
-    auto data = readNoFollow(path, limits.maxFileBytes, why);
-    if (!data) {
-      c.entryNote(shownPath(relStr) + ": refused: cannot be read (" + why + ")");
-      continue;
-    }
-    if (data->size() > limits.maxFileBytes) {
-      c.entryNote(tooLarge(relStr, limits.maxFileBytes, limits, true));
-      continue;
-    }
-    c.offer(name, relStr, p.parts.size(), std::move(*data));
+    const std::string target =
+        kind == Kind::Symlink ? fs::read_symlink(path, sec).string() : std::string();
+    const std::string name = screen(c, rel, p, kind, target, sawNested);
+    if (!name.empty()) takeFolderCopy(c, path, name, joinPath(p.parts), p.parts.size(), limits);
   }
   return c.finish(dest, "folder", anyEntries, sawNested);
 }

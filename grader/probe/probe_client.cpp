@@ -197,6 +197,24 @@ Io receiveExactly(int fd, std::size_t n, std::string& out, const Deadline& deadl
   return Io::Ok;
 }
 
+// A close-on-exec pipe whose ends close when it goes, unless taken.
+struct OwnedPipe {
+  int fd[2] = {-1, -1};
+  OwnedPipe() = default;
+  OwnedPipe(const OwnedPipe&) = delete;
+  OwnedPipe& operator=(const OwnedPipe&) = delete;
+  ~OwnedPipe() {
+    close(0);
+    close(1);
+  }
+  bool open() { return pipe2(fd, O_CLOEXEC) == 0; }
+  void close(int end) {
+    if (fd[end] >= 0) ::close(fd[end]);
+    fd[end] = -1;
+  }
+  int take(int end) { return std::exchange(fd[end], -1); }
+};
+
 // The reference forces for one probe (harness/force_channel.h): two pipes the probe asks on (its
 // fds 5 and 6) and a thread of the grader that answers them; stopped and joined when destroyed,
 // whatever the probe does (a stop pipe wakes the thread).
@@ -306,6 +324,60 @@ struct ProbeClient::Impl {
     return exit;
   }
 
+  // The sandbox of the next probe: it reads requests on `requestFd` and answers on `answerFd`.
+  SandboxSpec probeSpec(int requestFd, int answerFd) const {
+    SandboxSpec spec;
+    spec.argv = {fs::absolute(probe).string()};
+    spec.workDir = workRoot / ("probe-" + std::to_string(starts));
+    spec.removeWorkDir = true;
+    spec.workDirTmpfsBytes = kWorkDirBytes;
+    spec.limits = limits;
+    spec.mapFds = {{requestFd, kProbeRequestFd}, {answerFd, kProbeAnswerFd}};
+    spec.hide = hide;
+    spec.reveal = reveal;
+    spec.uid = uid;
+    spec.gid = gid;
+    return spec;
+  }
+
+  // When the probe asks for reference forces: their server, its pipes passed in `spec`.
+  // Returns an error, or "".
+  std::string openForceServer(SandboxSpec& spec) {
+    if (!forceModels.spring && !forceModels.external) return "";
+    forceServer = std::make_unique<ForceServer>();
+    if (std::string error; !forceServer->open(error)) {
+      forceServer.reset();
+      return error;
+    }
+    for (const auto& fds : forceServer->probeFds()) spec.mapFds.push_back(fds);
+    return "";
+  }
+
+  // Starts the probe of `spec` and the force server's thread; on success keeps our ends of the
+  // request and answer pipes.
+  Outcome launch(const SandboxSpec& spec, OwnedPipe& request, OwnedPipe& answer) {
+    process = std::make_unique<SandboxedProcess>(spec);
+    request.close(0);
+    answer.close(1);
+    const bool served = !forceServer || forceServer->start(forceModels, &forceAnswers);
+    for (const std::string& note : process->notes()) {
+      if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(note);
+    }
+    if (!process->error().empty() || !served) {
+      const std::string error =
+          served ? process->error() : "no thread could be started to answer its forces";
+      process.reset();
+      forceServer.reset();
+      ++incidents.startFailures;
+      return failure(Fault::StartFailed, "could not start the probe: " + error);
+    }
+    toProbe = request.take(1);
+    fromProbe = answer.take(0);
+    fcntl(toProbe, F_SETFL, fcntl(toProbe, F_GETFL) | O_NONBLOCK);
+    fcntl(fromProbe, F_SETFL, fcntl(fromProbe, F_GETFL) | O_NONBLOCK);
+    return {};
+  }
+
   // Starts a probe when none runs; returns why not (a fault), or no fault.
   Outcome ensureStarted() {
     if (process) return {};
@@ -318,60 +390,15 @@ struct ProbeClient::Impl {
     ++starts;
     std::error_code ec;
     fs::create_directories(workRoot, ec);
-    int request[2], answer[2];
-    if (pipe2(request, O_CLOEXEC) != 0) {
+    OwnedPipe request, answer;
+    if (!request.open() || !answer.open()) {
       return failure(Fault::StartFailed, std::string("pipe: ") + std::strerror(errno));
     }
-    if (pipe2(answer, O_CLOEXEC) != 0) {
-      ::close(request[0]);
-      ::close(request[1]);
-      return failure(Fault::StartFailed, std::string("pipe: ") + std::strerror(errno));
+    SandboxSpec spec = probeSpec(request.fd[0], answer.fd[1]);
+    if (std::string error = openForceServer(spec); !error.empty()) {
+      return failure(Fault::StartFailed, error);
     }
-    SandboxSpec spec;
-    spec.argv = {fs::absolute(probe).string()};
-    spec.workDir = workRoot / ("probe-" + std::to_string(starts));
-    spec.removeWorkDir = true;
-    spec.workDirTmpfsBytes = kWorkDirBytes;
-    spec.limits = limits;
-    spec.mapFds = {{request[0], kProbeRequestFd}, {answer[1], kProbeAnswerFd}};
-    if (forceModels.spring || forceModels.external) {
-      forceServer = std::make_unique<ForceServer>();
-      if (std::string error; !forceServer->open(error)) {
-        forceServer.reset();
-        ::close(request[0]);
-        ::close(request[1]);
-        ::close(answer[0]);
-        ::close(answer[1]);
-        return failure(Fault::StartFailed, error);
-      }
-      for (const auto& fds : forceServer->probeFds()) spec.mapFds.push_back(fds);
-    }
-    spec.hide = hide;
-    spec.reveal = reveal;
-    spec.uid = uid;
-    spec.gid = gid;
-    process = std::make_unique<SandboxedProcess>(spec);
-    ::close(request[0]);
-    ::close(answer[1]);
-    const bool served = !forceServer || forceServer->start(forceModels, &forceAnswers);
-    for (const std::string& note : process->notes()) {
-      if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(note);
-    }
-    if (!process->error().empty() || !served) {
-      const std::string error =
-          served ? process->error() : "no thread could be started to answer its forces";
-      ::close(request[1]);
-      ::close(answer[0]);
-      process.reset();
-      forceServer.reset();
-      ++incidents.startFailures;
-      return failure(Fault::StartFailed, "could not start the probe: " + error);
-    }
-    toProbe = request[1];
-    fromProbe = answer[0];
-    fcntl(toProbe, F_SETFL, fcntl(toProbe, F_GETFL) | O_NONBLOCK);
-    fcntl(fromProbe, F_SETFL, fcntl(fromProbe, F_GETFL) | O_NONBLOCK);
-    return {};
+    return launch(spec, request, answer);
   }
 
   // The probe's answer pipe must be silent between requests; anything there means it wrote

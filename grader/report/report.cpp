@@ -502,10 +502,17 @@ void htmlImages(std::ostringstream& out, const TestOutcome& t) {
   out << "</div>";
 }
 
-}  // namespace
+// A box of one kind ("error", "warn") with a title and a list, unless the list is empty.
+void htmlBox(std::ostringstream& out, const char* kind, const char* title,
+             const std::vector<std::string>& lines) {
+  if (lines.empty()) return;
+  out << "<div class=\"box " << kind << "\"><b>" << title << "</b><ul>";
+  for (const std::string& line : lines) out << "<li>" << htmlEscape(line) << "</li>";
+  out << "</ul></div>\n";
+}
 
-std::string htmlReport(const GradeReport& report) {
-  std::ostringstream out;
+// The page's head, title, the score line and the boxes of what went wrong or is worth knowing.
+void htmlHead(std::ostringstream& out, const GradeReport& report) {
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
       << "<title>Grade report: " << htmlEscape(report.submission) << "</title>"
       << "<style>" << kCss << "</style></head><body>\n";
@@ -515,33 +522,23 @@ std::string htmlReport(const GradeReport& report) {
       << fmt(report.score - report.extraCredit) << " / " << fmt(report.maxScore) << "</b>";
   if (report.extraCredit > 0) out << " (+" << fmt(report.extraCredit) << " extra credit)";
   out << " &middot; seed " << report.seed << " &middot; " << fixed2(report.seconds) << " s</p>\n";
-
   if (!report.refused.empty()) {
     out << "<div class=\"box error\"><b>Not graded</b><p>" << htmlEscape(report.refused)
         << "</p></div>\n";
   }
-  if (!report.errors.empty() || !report.build.error.empty() ||
-      (!report.intake.ok() && report.refused != report.intake.error)) {
-    out << "<div class=\"box error\"><b>Grading problems</b><ul>";
-    if (!report.intake.ok()) out << "<li>intake: " << htmlEscape(report.intake.error) << "</li>";
-    if (!report.build.error.empty()) {
-      out << "<li>build: " << htmlEscape(report.build.error) << "</li>";
-    }
-    for (const std::string& e : report.errors) out << "<li>" << htmlEscape(e) << "</li>";
-    out << "</ul></div>\n";
-  }
-  if (!report.warnings.empty()) {
-    out << "<div class=\"box warn\"><b>Rubric warnings</b><ul>";
-    for (const std::string& w : report.warnings) out << "<li>" << htmlEscape(w) << "</li>";
-    out << "</ul></div>\n";
-  }
-  if (!report.notes.empty()) {
-    out << "<div class=\"box warn\"><b>Notes on this run</b><ul>";
-    for (const std::string& n : report.notes) out << "<li>" << htmlEscape(n) << "</li>";
-    out << "</ul></div>\n";
-  }
+  // The intake's error shows here too, unless it is the only problem and said above.
+  std::vector<std::string> problems;
+  if (!report.intake.ok()) problems.push_back("intake: " + report.intake.error);
+  if (!report.build.error.empty()) problems.push_back("build: " + report.build.error);
+  problems.insert(problems.end(), report.errors.begin(), report.errors.end());
+  const bool saidAbove = !report.intake.ok() && report.refused == report.intake.error;
+  if (problems.size() > (saidAbove ? 1u : 0u)) htmlBox(out, "error", "Grading problems", problems);
+  htmlBox(out, "warn", "Rubric warnings", report.warnings);
+  htmlBox(out, "warn", "Notes on this run", report.notes);
+}
 
-  // The score table.
+// The score table: one row per item, then the total.
+void htmlScoreTable(std::ostringstream& out, const GradeReport& report) {
   out << "<h2>Score</h2>\n<table><tr><th>#</th><th>item</th><th>visibility</th>"
       << "<th class=\"num\">points</th><th class=\"num\">checks passed</th></tr>\n";
   for (const ScoredItem& s : report.items) {
@@ -558,8 +555,11 @@ std::string htmlReport(const GradeReport& report) {
       << fmt(report.score - report.extraCredit) << " / " << fmt(report.maxScore);
   if (report.extraCredit > 0) out << " + " << fmt(report.extraCredit);
   out << "</th><th></th></tr></table>\n";
+}
 
-  // Intake.
+// The submission: each task file's graded copy and build, the intake's notes, the compiler's
+// messages (open where a task uses the starter's stub).
+void htmlSubmission(std::ostringstream& out, const GradeReport& report) {
   out << "<h2>Submission</h2>\n<table><tr><th>task file</th><th>graded copy</th>"
       << "<th>build</th></tr>\n";
   for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {
@@ -589,31 +589,40 @@ std::string htmlReport(const GradeReport& report) {
         << "</code></summary><pre>" << htmlEscape(cap(t.messages, 64u << 10))
         << "</pre></details>\n";
   }
+}
 
-  // Every item with its tests.
-  for (const ScoredItem& s : report.items) {
-    out << "<h2 id=\"item-" << s.number << "\">" << s.number << " " << htmlEscape(s.item.name)
-        << " &mdash; " << fmt(s.score) << " / " << fmt(s.item.points) << "</h2>\n";
-    if (s.tests.empty()) {
-      out << "<p class=\"fail\">No test matched this item.</p>\n";
-      continue;
-    }
-    out << "<table><tr><th>test</th><th>result</th><th class=\"num\">time (s)</th></tr>\n";
-    for (const TestOutcome* t : s.tests) {
-      out << "<tr><td><code>" << htmlEscape(t->name) << "</code>";
-      if (!t->passed && !t->message.empty()) {
-        out << "<pre>" << htmlEscape(cap(t->message, 32u << 10)) << "</pre>";
-      }
-      htmlImages(out, *t);
-      out << "</td><td class=\"" << (t->passed ? "pass\">passed" : "fail\">failed")
-          << "</td><td class=\"num\">" << fixed2(t->seconds) << "</td></tr>\n";
-    }
-    out << "</table>\n";
-    if (const std::string note = precisionNote(s); !note.empty()) {
-      out << "<p class=\"note\">" << htmlEscape(note) << "</p>\n";
-    }
+// One item with its tests: what each said when it failed, its images, its time.
+void htmlItem(std::ostringstream& out, const ScoredItem& s) {
+  out << "<h2 id=\"item-" << s.number << "\">" << s.number << " " << htmlEscape(s.item.name)
+      << " &mdash; " << fmt(s.score) << " / " << fmt(s.item.points) << "</h2>\n";
+  if (s.tests.empty()) {
+    out << "<p class=\"fail\">No test matched this item.</p>\n";
+    return;
   }
+  out << "<table><tr><th>test</th><th>result</th><th class=\"num\">time (s)</th></tr>\n";
+  for (const TestOutcome* t : s.tests) {
+    out << "<tr><td><code>" << htmlEscape(t->name) << "</code>";
+    if (!t->passed && !t->message.empty()) {
+      out << "<pre>" << htmlEscape(cap(t->message, 32u << 10)) << "</pre>";
+    }
+    htmlImages(out, *t);
+    out << "</td><td class=\"" << (t->passed ? "pass\">passed" : "fail\">failed")
+        << "</td><td class=\"num\">" << fixed2(t->seconds) << "</td></tr>\n";
+  }
+  out << "</table>\n";
+  if (const std::string note = precisionNote(s); !note.empty()) {
+    out << "<p class=\"note\">" << htmlEscape(note) << "</p>\n";
+  }
+}
 
+}  // namespace
+
+std::string htmlReport(const GradeReport& report) {
+  std::ostringstream out;
+  htmlHead(out, report);
+  htmlScoreTable(out, report);
+  htmlSubmission(out, report);
+  for (const ScoredItem& s : report.items) htmlItem(out, s);
   if (!report.probeOutput.empty()) {
     out << "<h2>Probe output</h2>\n<details><summary>What the student's code printed "
         << "(capped; never used for scoring)</summary><pre>" << htmlEscape(report.probeOutput)

@@ -601,15 +601,29 @@ std::vector<fs::path> unsearchableAncestors(const std::vector<fs::path>& reveals
   return covers;
 }
 
-// SandboxSpec::hide and reveal as mount operations, outer paths first; as a non-root user, a
-// note naming what stays readable instead.
-void planMounts(const SandboxSpec& spec, Plan& plan) {
-  const std::vector<fs::path> reveals = revealsOf(spec, plan);
+// The paths to hide: the spec's, and as a dropped user the unsearchable folders above a reveal.
+std::vector<fs::path> hidesOf(const SandboxSpec& spec, const std::vector<fs::path>& reveals,
+                              const Plan& plan) {
   std::vector<fs::path> hides;
   for (const fs::path& h : spec.hide) hides.push_back(canonicalish(h));
   if (plan.dropPrivileges) {
     for (const fs::path& c : unsearchableAncestors(reveals, plan)) hides.push_back(c);
   }
+  return hides;
+}
+
+// The note for paths a non-root grader cannot hide; the first eight by name.
+std::string unhiddenNote(const std::vector<std::string>& unreadable) {
+  std::string note =
+      "not running as root, so these paths cannot be hidden and only file "
+      "permissions protect them:";
+  for (std::size_t k = 0; k < unreadable.size() && k < 8; ++k) note += " " + unreadable[k];
+  if (unreadable.size() > 8) note += " and " + std::to_string(unreadable.size() - 8) + " more";
+  return note;
+}
+
+// One hide operation per existing path (as root); returns the paths hidden.
+std::vector<fs::path> planHides(const std::vector<fs::path>& hides, Plan& plan) {
   std::vector<fs::path> hidden;
   std::vector<std::string> unreadable;
   for (const fs::path& path : hides) {
@@ -632,15 +646,13 @@ void planMounts(const SandboxSpec& spec, Plan& plan) {
     plan.ops.push_back(op);
     hidden.push_back(path);
   }
-  if (!unreadable.empty()) {
-    std::string note =
-        "not running as root, so these paths cannot be hidden and only file "
-        "permissions protect them:";
-    for (std::size_t k = 0; k < unreadable.size() && k < 8; ++k) note += " " + unreadable[k];
-    if (unreadable.size() > 8) note += " and " + std::to_string(unreadable.size() - 8) + " more";
-    plan.notes.push_back(note);
-  }
-  if (plan.ops.empty()) return;
+  if (!unreadable.empty()) plan.notes.push_back(unhiddenNote(unreadable));
+  return hidden;
+}
+
+// One reveal operation per revealed path that lies under a hidden one.
+void planReveals(const std::vector<fs::path>& reveals, const std::vector<fs::path>& hidden,
+                 Plan& plan) {
   for (const fs::path& path : reveals) {
     if (std::none_of(hidden.begin(), hidden.end(),
                      [&](const fs::path& h) { return within(path, h); })) {
@@ -661,6 +673,15 @@ void planMounts(const SandboxSpec& spec, Plan& plan) {
     }
     plan.ops.push_back(op);
   }
+}
+
+// SandboxSpec::hide and reveal as mount operations, outer paths first; as a non-root user, a
+// note naming what stays readable instead.
+void planMounts(const SandboxSpec& spec, Plan& plan) {
+  const std::vector<fs::path> reveals = revealsOf(spec, plan);
+  const std::vector<fs::path> hidden = planHides(hidesOf(spec, reveals, plan), plan);
+  if (plan.ops.empty()) return;
+  planReveals(reveals, hidden, plan);
   // Outer paths first; at equal depth, hide before revealing.
   std::stable_sort(plan.ops.begin(), plan.ops.end(), [](const MountOp& a, const MountOp& b) {
     if (a.depth != b.depth) return a.depth < b.depth;
@@ -668,12 +689,8 @@ void planMounts(const SandboxSpec& spec, Plan& plan) {
   });
 }
 
-// Everything before fork. Returns an error, or "".
-std::string makePlan(const SandboxSpec& spec, Plan& plan) {
-  if (spec.argv.empty() || spec.argv[0].empty() || spec.argv[0][0] != '/') {
-    return "argv[0] must be an absolute path" +
-           (spec.argv.empty() ? std::string() : " (got '" + spec.argv[0] + "')");
-  }
+// Who the child runs as, and its argv and envp arrays (pointing into plan's own strings).
+void planProgram(const SandboxSpec& spec, Plan& plan) {
   plan.root = geteuid() == 0;
   plan.dropPrivileges = plan.root && spec.uid != 0;
   plan.uid = spec.uid;
@@ -685,7 +702,10 @@ std::string makePlan(const SandboxSpec& spec, Plan& plan) {
   plan.argv.push_back(nullptr);
   for (std::string& e : plan.envs) plan.envp.push_back(e.data());
   plan.envp.push_back(nullptr);
+}
 
+// The work dir, and as root the options of the tmpfs laid over it.
+std::string planWorkDir(const SandboxSpec& spec, Plan& plan) {
   if (std::string e = prepareWorkDir(spec.workDir, plan); !e.empty()) return e;
   plan.workDir = fs::absolute(spec.workDir).lexically_normal().string();
   if (plan.root && spec.workDirTmpfsBytes > 0) {
@@ -693,11 +713,11 @@ std::string makePlan(const SandboxSpec& spec, Plan& plan) {
                      ",mode=0700,uid=" + std::to_string(plan.dropPrivileges ? plan.uid : 0) +
                      ",gid=" + std::to_string(plan.dropPrivileges ? plan.gid : 0);
   }
+  return "";
+}
 
-  planMounts(spec, plan);
-
-  // Limits.
-  const Limits& l = spec.limits;
+// The rlimits, in the order the child sets them.
+void planLimits(const Limits& l, Plan& plan) {
   const auto cpu = static_cast<rlim_t>(std::max(1.0, std::ceil(l.cpuSeconds)));
   plan.limits.push_back({RLIMIT_CPU, cpu, cpu + 1});  // SIGXCPU first, SIGKILL a second later
   plan.limits.push_back({RLIMIT_AS, l.memoryBytes, l.memoryBytes});
@@ -708,8 +728,11 @@ std::string makePlan(const SandboxSpec& spec, Plan& plan) {
   const long tasks = tasksOf(plan.dropPrivileges ? plan.uid : getuid());
   const auto nproc = static_cast<rlim_t>(tasks + 1 + std::max(0, l.processes));
   plan.limits.push_back({RLIMIT_NPROC, nproc, nproc});
+}
 
-  // Descriptors.
+// The descriptors the child keeps or receives, and the free range above them the child uses
+// while moving them into place. Returns an error, or "".
+std::string planFds(const SandboxSpec& spec, Plan& plan) {
   int highest = 2;
   for (int fd : spec.keepFds) {
     plan.fds.push_back({fd, fd});
@@ -726,23 +749,33 @@ std::string makePlan(const SandboxSpec& spec, Plan& plan) {
   getrlimit(RLIMIT_NOFILE, &nofile);
   plan.maxFd = static_cast<int>(std::min<rlim_t>(nofile.rlim_cur, 65536));
   if (plan.highBase + 70 > plan.maxFd) return "fd numbers too high to pass";
+  return "";
+}
 
+// Everything before fork. Returns an error, or "".
+std::string makePlan(const SandboxSpec& spec, Plan& plan) {
+  if (spec.argv.empty() || spec.argv[0].empty() || spec.argv[0][0] != '/') {
+    return "argv[0] must be an absolute path" +
+           (spec.argv.empty() ? std::string() : " (got '" + spec.argv[0] + "')");
+  }
+  planProgram(spec, plan);
+  if (std::string e = planWorkDir(spec, plan); !e.empty()) return e;
+  planMounts(spec, plan);
+  planLimits(spec.limits, plan);
+  if (std::string e = planFds(spec, plan); !e.empty()) return e;
   std::string filterError;
-  plan.filter = filterFor(l.processes <= 0, filterError);
+  plan.filter = filterFor(spec.limits.processes <= 0, filterError);
   if (!filterError.empty()) plan.notes.push_back(filterError + "; sockets are not refused");
   return "";
 }
 
-std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec& spec) {
+// The sentence for a failed step that isolates the child (mounts, network, seccomp); "" for
+// the other steps.
+std::string describeIsolationStep(const Record& r, const Plan& plan) {
   const std::string err = errnoText(r.err);
-  const auto& op = [&]() -> const MountOp& {
-    static const MountOp none;
-    return r.index >= 0 && static_cast<std::size_t>(r.index) < plan.ops.size() ? plan.ops[r.index]
-                                                                               : none;
-  };
+  const bool hasOp = r.index >= 0 && static_cast<std::size_t>(r.index) < plan.ops.size();
+  const std::string opPath = hasOp ? plan.ops[r.index].path : std::string();
   switch (r.stage) {
-    case kSetsid:
-      return "setsid: " + err;
     case kUnshareMounts:
       return "could not hide the grader's files (unshare(CLONE_NEWNS): " + err +
              "): only file permissions protect them";
@@ -750,12 +783,38 @@ std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec&
       return "could not hide the grader's files (making / private: " + err +
              "): only file permissions protect them";
     case kHide:
-      return "could not hide " + op().path + " (mount: " + err + ")";
+      return "could not hide " + opPath + " (mount: " + err + ")";
     case kReveal:
-      return "could not keep " + op().path + " visible under a hidden path: " + err;
+      return "could not keep " + opPath + " visible under a hidden path: " + err;
     case kUnshareNet:
       return "no network namespace (unshare(CLONE_NEWNET): " + err +
              "): sockets are refused by the seccomp filter only";
+    case kWorkTmpfs:
+      return "mounting a tmpfs on the work dir " + plan.workDir + ": " + err;
+    case kSeccomp:
+      return "could not install the seccomp filter (" + err + "): sockets are not refused";
+    default:
+      return "";
+  }
+}
+
+// The sentence for a failed exec, with the likely cause when it runs as another user.
+std::string describeExec(const Record& r, const Plan& plan, const SandboxSpec& spec) {
+  std::string text = "exec " + spec.argv[0] + ": " + errnoText(r.err);
+  if (r.err == EACCES && plan.dropPrivileges) {
+    text += " (it runs as uid " + std::to_string(plan.uid) +
+            ": the program and every folder above it must be readable and searchable by "
+            "other users)";
+  }
+  return text;
+}
+
+// The sentence for a failed step that sets up the process (session, fds, limits, identity).
+std::string describeProcessStep(const Record& r, const Plan& plan, const SandboxSpec& spec) {
+  const std::string err = errnoText(r.err);
+  switch (r.stage) {
+    case kSetsid:
+      return "setsid: " + err;
     case kDevNull:
       return "opening /dev/null: " + err;
     case kFds:
@@ -768,8 +827,6 @@ std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec&
              ": " + err;
     case kChdir:
       return "entering the work dir " + plan.workDir + ": " + err;
-    case kWorkTmpfs:
-      return "mounting a tmpfs on the work dir " + plan.workDir + ": " + err;
     case kSetgroups:
       return "dropping supplementary groups: " + err;
     case kSetgid:
@@ -780,20 +837,17 @@ std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec&
       return "setting the parent-death signal: " + err;
     case kNoNewPrivs:
       return "setting no_new_privs: " + err;
-    case kSeccomp:
-      return "could not install the seccomp filter (" + err + "): sockets are not refused";
-    case kExec: {
-      std::string text = "exec " + spec.argv[0] + ": " + err;
-      if (r.err == EACCES && plan.dropPrivileges) {
-        text += " (it runs as uid " + std::to_string(plan.uid) +
-                ": the program and every folder above it must be readable and searchable by "
-                "other users)";
-      }
-      return text;
-    }
+    case kExec:
+      return describeExec(r, plan, spec);
     default:
       return "unknown setup stage " + std::to_string(r.stage) + ": " + err;
   }
+}
+
+// A child's setup report as a sentence for the grader's log or the student's report.
+std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec& spec) {
+  if (std::string text = describeIsolationStep(r, plan); !text.empty()) return text;
+  return describeProcessStep(r, plan, spec);
 }
 
 // A started child: its pid, its output pipe, and what the setup said.
@@ -805,26 +859,67 @@ struct Started {
   std::string workDir;
 };
 
+// Reads one setup report from the child, waiting until `deadline`.
+enum class Report { Got, Exec, Silent };
+Report readReport(int fd, Clock::time_point deadline, Record& r) {
+  std::size_t got = 0;
+  while (got < sizeof r) {
+    pollfd pfd{fd, POLLIN, 0};
+    const int wait = static_cast<int>(std::max<long long>(
+        0, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count()));
+    const int ready = poll(&pfd, 1, wait);
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) return Report::Silent;
+    const ssize_t n = ::read(fd, reinterpret_cast<char*>(&r) + got, sizeof r - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return Report::Exec;  // EOF: the close-on-exec pipe closed in execve
+    got += static_cast<std::size_t>(n);
+  }
+  return Report::Got;
+}
+
+// Reads the child's setup reports until it runs the program: a fatal report (or silence for
+// 30 s) becomes s.error and returns false; the others become notes.
+bool awaitExec(int statusFd, const Plan& plan, const SandboxSpec& spec, Started& s) {
+  const auto deadline = Clock::now() + std::chrono::seconds(30);
+  bool started = true;
+  for (Record r; started;) {
+    const Report report = readReport(statusFd, deadline, r);
+    if (report == Report::Exec) break;
+    if (report == Report::Silent) {
+      s.error = "the sandboxed child did not start within 30 s";
+      started = false;
+    } else if (r.fatal != 0) {
+      s.error = describeRecord(r, plan, spec);
+      started = false;
+    } else {
+      s.notes.push_back(describeRecord(r, plan, spec));
+    }
+  }
+  ::close(statusFd);
+  return started;
+}
+
+// The output pipe and the status pipe, both close-on-exec. Returns an error, or "".
+std::string openPipes(int out[2], int status[2]) {
+  if (pipe2(out, O_CLOEXEC) != 0) return "pipe: " + errnoText(errno);
+  if (pipe2(status, O_CLOEXEC) != 0) {
+    const std::string error = "pipe: " + errnoText(errno);
+    ::close(out[0]);
+    ::close(out[1]);
+    return error;
+  }
+  return "";
+}
+
 Started start(const SandboxSpec& spec) {
   Started s;
   Plan plan;
   s.error = makePlan(spec, plan);
   s.workDir = plan.workDir;
   s.notes = plan.notes;
-  if (!s.error.empty()) {
-    return s;
-  }
   int out[2], status[2];
-  if (pipe2(out, O_CLOEXEC) != 0) {
-    s.error = "pipe: " + errnoText(errno);
-    return s;
-  }
-  if (pipe2(status, O_CLOEXEC) != 0) {
-    s.error = "pipe: " + errnoText(errno);
-    ::close(out[0]);
-    ::close(out[1]);
-    return s;
-  }
+  if (!s.error.empty() || !(s.error = openPipes(out, status)).empty()) return s;
   plan.outFd = out[1];
   plan.statusFd = status[1];
 
@@ -838,39 +933,7 @@ Started start(const SandboxSpec& spec) {
     ::close(status[0]);
     return s;
   }
-
-  // Until execve: the child's setup reports (EOF means it ran the program).
-  bool fatal = false;
-  Record r;
-  std::size_t got = 0;
-  const auto deadline = Clock::now() + std::chrono::seconds(30);
-  for (;;) {
-    pollfd pfd{status[0], POLLIN, 0};
-    const int wait = static_cast<int>(std::max<long long>(
-        0, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count()));
-    const int ready = poll(&pfd, 1, wait);
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready <= 0) {
-      s.error = "the sandboxed child did not start within 30 s";
-      fatal = true;
-      break;
-    }
-    const ssize_t n = ::read(status[0], reinterpret_cast<char*>(&r) + got, sizeof r - got);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    got += static_cast<std::size_t>(n);
-    if (got < sizeof r) continue;
-    got = 0;
-    const std::string text = describeRecord(r, plan, spec);
-    if (r.fatal != 0) {
-      s.error = text;
-      fatal = true;
-    } else {
-      s.notes.push_back(text);
-    }
-  }
-  ::close(status[0]);
-  if (fatal) {
+  if (!awaitExec(status[0], plan, spec, s)) {
     kill(-pid, SIGKILL);
     kill(pid, SIGKILL);
     waitpid(pid, nullptr, 0);

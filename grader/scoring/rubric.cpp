@@ -195,58 +195,65 @@ const std::vector<std::string> kItemKeys = {"name",       "task",           "tes
                                             "points",     "all_or_nothing", "extra_credit",
                                             "visibility", "time_limit"};
 
-void parseItem(const toml::table& table, int index, Visibility defaultVisibility,
-               double defaultTimeLimit, Checker& check, Rubric& rubric) {
-  RubricItem item;
-  item.visibility = defaultVisibility;
-  item.timeLimitSeconds = defaultTimeLimit;
-  item.line = static_cast<int>(table.source().begin.line);
-  const std::string label = "[[item]] " + std::to_string(index);
-
-  for (auto&& [key, node] : table) {
-    const std::string k(key.str());
-    const int line = static_cast<int>(key.source().begin.line);
-    const std::string where = "'" + k + "' of " + label;
-    if (k == "name") {
-      check.string(node, where, item.name);
-    } else if (k == "task") {
-      long long task = 0;
-      if (check.integer(node, where, task)) {
-        if (task < 0 || task > 6) check.error(line, where + " must be 1..6, or 0 for none");
-        item.task = static_cast<int>(task);
-      }
-    } else if (k == "tests") {
-      if (node.is_string()) {
-        item.tests.push_back(*node.value<std::string>());
-      } else if (const toml::array* array = node.as_array()) {
-        for (const toml::node& glob : *array) {
-          std::string text;
-          if (check.string(glob, "each glob in " + where, text)) item.tests.push_back(text);
-        }
-      } else {
-        check.error(
-            line, where + " must be a glob string or a list of them, not " + typeName(node.type()));
-      }
-    } else if (k == "points") {
-      if (check.number(node, where, item.points) && item.points < 0) {
-        check.error(line, where + " is negative (" + std::to_string(item.points) +
-                              "): points are 0 or more");
-      }
-    } else if (k == "all_or_nothing") {
-      check.boolean(node, where, item.allOrNothing);
-    } else if (k == "extra_credit") {
-      check.boolean(node, where, item.extraCredit);
-    } else if (k == "visibility") {
-      check.visibility(node, where, item.visibility);
-    } else if (k == "time_limit") {
-      check.timeLimit(node, where, item.timeLimitSeconds);
-    } else {
-      check.error(line, "unknown key '" + k + "' in " + label + suggestion(k, kItemKeys) +
-                            "; an item has: name, task, tests, points, all_or_nothing, "
-                            "extra_credit, visibility, time_limit");
-    }
+// An item's `task`: 1..6, or 0 for none.
+void parseTask(const toml::node& node, int line, const std::string& where, Checker& check,
+               RubricItem& item) {
+  long long task = 0;
+  if (check.integer(node, where, task)) {
+    if (task < 0 || task > 6) check.error(line, where + " must be 1..6, or 0 for none");
+    item.task = static_cast<int>(task);
   }
-  // Required keys.
+}
+
+// An item's `tests`: one glob, or a list of them.
+void parseTests(const toml::node& node, int line, const std::string& where, Checker& check,
+                RubricItem& item) {
+  if (node.is_string()) {
+    item.tests.push_back(*node.value<std::string>());
+  } else if (const toml::array* array = node.as_array()) {
+    for (const toml::node& glob : *array) {
+      std::string text;
+      if (check.string(glob, "each glob in " + where, text)) item.tests.push_back(text);
+    }
+  } else {
+    check.error(line,
+                where + " must be a glob string or a list of them, not " + typeName(node.type()));
+  }
+}
+
+// One key of an item, checked into `item`.
+void parseItemKey(const std::string& k, const toml::node& node, int line, const std::string& label,
+                  Checker& check, RubricItem& item) {
+  const std::string where = "'" + k + "' of " + label;
+  if (k == "name") {
+    check.string(node, where, item.name);
+  } else if (k == "task") {
+    parseTask(node, line, where, check, item);
+  } else if (k == "tests") {
+    parseTests(node, line, where, check, item);
+  } else if (k == "points") {
+    if (check.number(node, where, item.points) && item.points < 0) {
+      check.error(
+          line, where + " is negative (" + std::to_string(item.points) + "): points are 0 or more");
+    }
+  } else if (k == "all_or_nothing") {
+    check.boolean(node, where, item.allOrNothing);
+  } else if (k == "extra_credit") {
+    check.boolean(node, where, item.extraCredit);
+  } else if (k == "visibility") {
+    check.visibility(node, where, item.visibility);
+  } else if (k == "time_limit") {
+    check.timeLimit(node, where, item.timeLimitSeconds);
+  } else {
+    check.error(line, "unknown key '" + k + "' in " + label + suggestion(k, kItemKeys) +
+                          "; an item has: name, task, tests, points, all_or_nothing, "
+                          "extra_credit, visibility, time_limit");
+  }
+}
+
+// The keys every item must have, and no empty glob.
+void checkItemComplete(const toml::table& table, const std::string& label, const RubricItem& item,
+                       Checker& check) {
   if (!table.contains("name")) check.error(item.line, label + " has no 'name'");
   if (!table.contains("tests")) check.error(item.line, label + " has no 'tests' (a glob)");
   if (!table.contains("points")) check.error(item.line, label + " has no 'points'");
@@ -256,7 +263,93 @@ void parseItem(const toml::table& table, int index, Visibility defaultVisibility
   for (const std::string& glob : item.tests) {
     if (glob.empty()) check.error(item.line, label + " has an empty glob in 'tests'");
   }
+}
+
+void parseItem(const toml::table& table, int index, Visibility defaultVisibility,
+               double defaultTimeLimit, Checker& check, Rubric& rubric) {
+  RubricItem item;
+  item.visibility = defaultVisibility;
+  item.timeLimitSeconds = defaultTimeLimit;
+  item.line = static_cast<int>(table.source().begin.line);
+  const std::string label = "[[item]] " + std::to_string(index);
+  for (auto&& [key, node] : table) {
+    parseItemKey(std::string(key.str()), node, static_cast<int>(key.source().begin.line), label,
+                 check, item);
+  }
+  checkItemComplete(table, label, item, check);
   rubric.items.push_back(std::move(item));
+}
+
+// The defaults the top level sets for every item.
+struct ItemDefaults {
+  Visibility visibility = Visibility::Visible;
+  double timeLimit = 10;
+};
+
+// The top-level keys (the defaults apply to every item, wherever they appear).
+ItemDefaults parseTopLevel(const toml::table& root, Checker& check, Rubric& rubric) {
+  ItemDefaults defaults;
+  bool haveTotal = false;
+  for (auto&& [key, node] : root) {
+    const std::string k(key.str());
+    const int line = static_cast<int>(key.source().begin.line);
+    if (k == "title") {
+      check.string(node, "'title'", rubric.title);
+    } else if (k == "total") {
+      haveTotal = check.number(node, "'total'", rubric.totalPoints);
+      if (haveTotal && rubric.totalPoints < 0) check.error(line, "'total' is negative");
+    } else if (k == "visibility") {
+      check.visibility(node, "'visibility'", defaults.visibility);
+    } else if (k == "time_limit") {
+      check.timeLimit(node, "'time_limit'", defaults.timeLimit);
+    } else if (k != "item") {
+      check.error(line, "unknown top-level key '" + k + "'" + suggestion(k, kTopKeys) +
+                            "; the top level has: title, total, visibility, time_limit, "
+                            "[[item]]");
+    }
+  }
+  if (!haveTotal && !root.contains("total")) {
+    check.error(0, "no 'total': say how many points the rubric is out of (e.g. total = 100)");
+  }
+  return defaults;
+}
+
+// The [[item]] tables, in order.
+void parseItems(const toml::table& root, const ItemDefaults& defaults, Checker& check,
+                Rubric& rubric) {
+  const toml::node* items = root.get("item");
+  if (items == nullptr) return;
+  const toml::array* array = items->as_array();
+  if (array == nullptr || !array->is_array_of_tables()) {
+    check.error(Checker::lineOf(*items), "'item' must be written as [[item]] tables");
+    return;
+  }
+  int index = 0;
+  for (const toml::node& node : *array) {
+    parseItem(*node.as_table(), ++index, defaults.visibility, defaults.timeLimit, check, rubric);
+  }
+}
+
+// What holds across items: names unique (they are the test names in results.json), and the
+// total what the regular items add up to.
+void checkAcrossItems(const toml::table& root, Checker& check, const Rubric& rubric) {
+  std::set<std::string> names;
+  for (const RubricItem& item : rubric.items) {
+    if (!item.name.empty() && !names.insert(item.name).second) {
+      check.error(item.line, "two items are named '" + item.name + "': names must be unique");
+    }
+  }
+  if (!check.clean()) return;
+  double sum = 0;
+  for (const RubricItem& item : rubric.items) {
+    if (!item.extraCredit) sum += item.points;
+  }
+  if (std::abs(sum - rubric.totalPoints) > 1e-9) {
+    std::ostringstream out;
+    out << "total = " << rubric.totalPoints << " but the items' points add up to " << sum
+        << " (extra credit not counted): fix the total or the points";
+    check.error(static_cast<int>(root.get("total")->source().begin.line), out.str());
+  }
 }
 
 }  // namespace
@@ -274,68 +367,10 @@ Rubric parseRubric(const std::string& text, const std::string& sourceName) {
     rubric.error = check.joined();
     return rubric;
   }
-
-  // Top-level keys first: the defaults apply to every item, wherever they appear.
-  Visibility defaultVisibility = Visibility::Visible;
-  double defaultTimeLimit = 10;
-  bool haveTotal = false;
-  for (auto&& [key, node] : root) {
-    const std::string k(key.str());
-    const int line = static_cast<int>(key.source().begin.line);
-    if (k == "title") {
-      check.string(node, "'title'", rubric.title);
-    } else if (k == "total") {
-      haveTotal = check.number(node, "'total'", rubric.totalPoints);
-      if (haveTotal && rubric.totalPoints < 0) check.error(line, "'total' is negative");
-    } else if (k == "visibility") {
-      check.visibility(node, "'visibility'", defaultVisibility);
-    } else if (k == "time_limit") {
-      check.timeLimit(node, "'time_limit'", defaultTimeLimit);
-    } else if (k != "item") {
-      check.error(line, "unknown top-level key '" + k + "'" + suggestion(k, kTopKeys) +
-                            "; the top level has: title, total, visibility, time_limit, "
-                            "[[item]]");
-    }
-  }
-  if (!haveTotal && !root.contains("total")) {
-    check.error(0, "no 'total': say how many points the rubric is out of (e.g. total = 100)");
-  }
-
-  if (const toml::node* items = root.get("item")) {
-    const toml::array* array = items->as_array();
-    if (array == nullptr || !array->is_array_of_tables()) {
-      check.error(Checker::lineOf(*items), "'item' must be written as [[item]] tables");
-    } else {
-      int index = 0;
-      for (const toml::node& node : *array) {
-        parseItem(*node.as_table(), ++index, defaultVisibility, defaultTimeLimit, check, rubric);
-      }
-    }
-  }
+  const ItemDefaults defaults = parseTopLevel(root, check, rubric);
+  parseItems(root, defaults, check, rubric);
   if (rubric.items.empty() && check.clean()) check.error(0, "no [[item]]: nothing to score");
-
-  // Item names are the test names in results.json: unique.
-  std::set<std::string> names;
-  for (const RubricItem& item : rubric.items) {
-    if (!item.name.empty() && !names.insert(item.name).second) {
-      check.error(item.line, "two items are named '" + item.name + "': names must be unique");
-    }
-  }
-
-  // The total must be what the regular items add up to.
-  if (check.clean()) {
-    double sum = 0;
-    for (const RubricItem& item : rubric.items) {
-      if (!item.extraCredit) sum += item.points;
-    }
-    if (std::abs(sum - rubric.totalPoints) > 1e-9) {
-      std::ostringstream out;
-      out << "total = " << rubric.totalPoints << " but the items' points add up to " << sum
-          << " (extra credit not counted): fix the total or the points";
-      check.error(static_cast<int>(root.get("total")->source().begin.line), out.str());
-    }
-  }
-
+  checkAcrossItems(root, check, rubric);
   rubric.error = check.joined();
   return rubric;
 }
