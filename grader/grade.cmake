@@ -16,10 +16,13 @@ add_executable(a6_grade
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/checks.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/collector.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/budgeted_student.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/checks/recording_student.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/checks/replays.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/build/startup.cpp)
 target_include_directories(a6_grade PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_grade PRIVATE a6_suite a6_golden_checks a6_report a6_rubric a6_intake
-                                       a6_build a6_probe_client CLI11::CLI11 GTest::gtest)
+                                       a6_build a6_probe_client a6_mistakes
+                                       a6_replay_view CLI11::CLI11 GTest::gtest)
 # The reference force models the probe of tasks 3 and 5 asks for (they stay in a6_grade).
 target_include_directories(a6_grade PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
 target_compile_definitions(a6_grade PRIVATE

@@ -23,7 +23,7 @@ harness::SpringForceRequest spring(Vec2 x1, Vec2 x2, double l0, double ks, doubl
 }
 
 std::string input(const harness::SpringForceRequest& r) {
-  return "input: p1 " + str(r.p1) + ", p2 " + str(r.p2) + ", l0=" + num(r.restLength) +
+  return "  input: p1 " + str(r.p1) + ", p2 " + str(r.p2) + ", l0=" + num(r.restLength) +
          ", ks=" + num(r.ks) + ", kd=" + num(r.kd);
 }
 
@@ -69,7 +69,7 @@ TEST(Task1Spring, DiagonalMatchesHandComputedValue) {
 
 TEST(Task1Spring, FormulaHoldsInEveryDirection) {
   const double l0 = 0.7, ks = 13;
-  ManyInputs springs("springs (16 directions, 3 lengths)");
+  ManyInputs springs("springs (16 directions, 3 lengths)", kNewton);
   // What the failing inputs have in common, for the hint: the exact opposite, or the right size
   // in a wrong direction.
   bool allOpposite = true, allRightSize = true;

@@ -34,7 +34,7 @@ Environment quiet() {
 std::string input(const harness::ForcesRequest& r) {
   const Particle& p = r.particle;
   const Environment& env = r.env;
-  std::string out = "input: particle " + str(p) + " T=" + num(p.temperature) +
+  std::string out = "  input: particle " + str(p) + " T=" + num(p.temperature) +
                     "; env g=" + str(env.gravity) + ", T_air=" + num(env.airTemperature) +
                     ", b=" + num(env.buoyancy) + ", k_d=" + num(env.drag) +
                     ", k_r=" + num(env.repulsion);
@@ -124,7 +124,7 @@ TEST(Task2Forces, GravityIsProportionalToMass) {
 }
 
 TEST(Task2Forces, GravityFollowsGInAnyDirection) {
-  ManyInputs directions("directions of g");
+  ManyInputs directions("directions of g", kNewton);
   for (int k = 0; k < 8; ++k) {
     const double angle = 2 * M_PI * k / 8 + 0.1;
     Environment env = quiet();
@@ -180,7 +180,7 @@ TEST(Task2Forces, NoBuoyancyAtAirTemperature) {
 // Drag ------------------------------------------------------------------------------------------
 
 TEST(Task2Forces, DragOpposesVelocityInAnyDirection) {
-  ManyInputs velocities("velocities (2 k_d, 12 directions)");
+  ManyInputs velocities("velocities (2 k_d, 12 directions)", kNewton);
   // By hand, |v| = 2.5 m/s: k_d = 0.7 gives 1.75 N against v, k_d = 2 gives 5 N.
   for (const auto& [kd, against] : {std::pair{0.7, 1.75}, {2.0, 5.0}}) {
     for (int k = 0; k < 12; ++k) {
@@ -220,7 +220,7 @@ TEST(Task2Forces, RepulsionFollowsADiagonalNormal) {
 TEST(Task2Forces, NoRepulsionOutsideOrOnTheSurface) {
   Environment env = quiet();
   env.repulsion = 1000;
-  ManyInputs contacts("contacts (3 depths, 2 normals)");
+  ManyInputs contacts("contacts (3 depths, 2 normals)", kNewton);
   for (const double depth : {-0.3, -1e-6, 0.0}) {
     for (const Vec2& n : {Vec2(0, 1), Vec2(-0.8, 0.6)}) {
       const auto r = request(particle(Vec2(0, 0)), env, Contact{depth, n});

@@ -58,7 +58,7 @@ SimulateRequest request(std::vector<Particle> particles, std::vector<SpringData>
 
 std::string input(const SimulateRequest& r) {
   std::ostringstream out;
-  out << "input: " << r.particles.size() << " particle(s)";
+  out << "  input: " << r.particles.size() << " particle(s)";
   const std::size_t shown = std::min<std::size_t>(r.particles.size(), 3);
   for (std::size_t k = 0; k < shown; ++k) out << (k == 0 ? " " : ", ") << str(r.particles[k]);
   if (shown < r.particles.size()) out << ", ...";
@@ -231,8 +231,9 @@ TEST(Task3TimeStepping, WithoutForcesParticlesKeepTheirVelocity) {
   auto r = request({particle(x0, v0, 0.25), particle(Vec2(-1, 3), Vec2::Zero(), 4.0)}, {}, h, 100);
   r.recordEvery = 25;
   A6_SIMULATE(result, r);
-  ManyInputs moving("positions of the moving particle"), velocities("velocities"),
-      resting("positions of the resting particle");
+  ManyInputs moving("positions of the moving particle", kMetre),
+      velocities("velocities", kMetrePerSecond),
+      resting("positions of the resting particle", kMetre);
   for (std::size_t k = 0; k < result.states.size(); ++k) {
     const double t = result.recordedFrames[k] * h;
     const std::string when = "\n  at t = " + num(t) + " s; " + input(r);
@@ -258,7 +259,7 @@ TEST(Task3TimeStepping, FreeFallMatchesTheDiscreteSum) {
   r.env.gravity = g;
   r.recordEvery = 20;
   A6_SIMULATE(result, r);
-  ManyInputs velocities("velocities"), positions("positions");
+  ManyInputs velocities("velocities", kMetrePerSecond), positions("positions", kMetre);
   for (std::size_t k = 0; k < result.states.size(); ++k) {
     const double t = result.recordedFrames[k] * h;
     const Particle& p = result.states[k][0];
@@ -378,7 +379,7 @@ TEST(Task3TimeStepping, TwoParticlesOnASpringKeepTheirMomentum) {
   const double M = 4.0;
   const Vec2 cm0 = (1.0 * r.particles[0].x + 3.0 * r.particles[1].x) / M;
   bool moved = false;
-  ManyInputs momenta("momenta (m1 v1 + m2 v2)"), centres("centres of mass");
+  ManyInputs momenta("momenta (m1 v1 + m2 v2)", kMomentum), centres("centres of mass", kMetre);
   for (std::size_t k = 0; k < result.states.size(); ++k) {
     const auto& s = result.states[k];
     const double t = result.recordedFrames[k] * h;
@@ -417,7 +418,8 @@ TEST(Task3TimeStepping, SpringsConserveLinearAndAngularMomentum) {
   const Vec2 P0 = momentum(ps);
   const double L0 = angularMomentum(ps);
   double largestChange = 0;
-  ManyInputs linear("linear momenta"), angular("angular momenta about the origin");
+  ManyInputs linear("linear momenta", kMomentum),
+      angular("angular momenta about the origin", kAngularMomentum);
   for (std::size_t k = 0; k < result.states.size(); ++k) {
     const auto& s = result.states[k];
     const std::string when =

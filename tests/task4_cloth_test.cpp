@@ -33,7 +33,7 @@ ClothSpec clothSpec(int n, bool shear = true, bool bending = true) {
 
 std::string input(const ClothSpec& s) {
   auto flag = [](bool b) { return b ? "true" : "false"; };
-  return "input: ClothSpec{n=" + std::to_string(s.n) + ", size=" + num(s.size) +
+  return "  input: ClothSpec{n=" + std::to_string(s.n) + ", size=" + num(s.size) +
          ", origin=" + str(s.origin) + ", particleMass=" + num(s.particleMass) +
          ", shear=" + flag(s.shear) + ", bending=" + flag(s.bending) +
          ", pinTopCorners=" + flag(s.pinTopCorners) + "} built into a system that already held " +

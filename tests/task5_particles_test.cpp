@@ -45,7 +45,7 @@ EmitterSpec emitterSpec() {
 
 std::string input(const EmitterSpec& s, std::uint64_t seed, int count) {
   std::ostringstream out;
-  out << "input: " << count << " particles from emitParticle with seed " << seed
+  out << "  input: " << count << " particles from emitParticle with seed " << seed
       << ", EmitterSpec{position=" << str(s.position) << ", radius=" << s.radius
       << ", velocity=" << str(s.velocity) << ", velocitySpread=" << s.velocitySpread
       << ", mass=" << num(s.mass) << ", temperature=[" << num(s.temperatureMin) << ", "
@@ -345,7 +345,7 @@ Particle particle(Vec2 x, Vec2 v, double m, double temperature = 293.15, double 
 
 std::string input(const harness::ParticleRunRequest& r) {
   std::ostringstream out;
-  out << "input: " << r.steps << " update(dt = " << num(r.dt) << ") with emitter rate "
+  out << "  input: " << r.steps << " update(dt = " << num(r.dt) << ") with emitter rate "
       << r.emitter.rate << ", gravity " << str(r.env.gravity) << ", buoyancy "
       << num(r.env.buoyancy) << ", drag " << num(r.env.drag) << ", T_air "
       << num(r.env.airTemperature) << ", coolingRate " << num(r.coolingRate);

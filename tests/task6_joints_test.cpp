@@ -163,8 +163,8 @@ TEST(Task6Joints, PendulumPeriodMatchesThePhysicalPendulum) {
       << hint("the bob must swing about the pivot: createHinge(world, ground, bob, pivot)");
   const double period = 2 * (crossings.back() - crossings.front()) / (crossings.size() - 1);
   EXPECT_CLOSE(period, expected, relTol(expected, 0.01))
-      << "input: pendulum, m=" << num(m) << " kg, I_cm=" << r.bodies[0].inertia << " kg m², L=" << L
-      << " m, θ0=" << num(theta0) << " rad"
+      << "  input: pendulum, m=" << num(m) << " kg, I_cm=" << r.bodies[0].inertia
+      << " kg m², L=" << L << " m, θ0=" << num(theta0) << " rad"
       << hint(
              "the period of a hinged bob is fixed by the pivot: check the hinge's anchor is the "
              "pivot (world point), not the bob's centre");
@@ -185,7 +185,7 @@ TEST(Task6Joints, HangingBobFeelsMinusMTimesGravityAndStaysAtRest) {
   const Vec2 expected = -m * kGravity;
   EXPECT_VEC_NEAR(r.joints[0].reactionForce, expected,
                   modelError(0.01 * expected.norm(), expected.norm()))
-      << "input: hanging bob, m=" << num(m) << " kg, gravity " << str(kGravity)
+      << "  input: hanging bob, m=" << num(m) << " kg, gravity " << str(kGravity)
       << ", reaction force on the bob (GetReactionForce) after " << steps << " steps"
       << hint("at rest the hinge carries the bob's whole weight: check the anchor is the pivot");
   const Vec2 start = kPivot - Vec2(0, p::kPendulumLength);

@@ -205,6 +205,7 @@ struct SceneRequest {
                             ///< initial state); any order, repeats allowed
   bool useDefaults = true;  ///< run with defaultParams(scene)...
   SceneParams params;       ///< ...or, when useDefaults is false, with these
+  bool lean = false;        ///< a replay's many frames: only the first snapshot keeps its springs
 };
 struct SceneResult : Outcome {
   std::vector<Snapshot> snapshots;  ///< snapshots[k] after request.frames[k] frames

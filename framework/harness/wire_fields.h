@@ -169,7 +169,7 @@ void fields(V& v, harness::Box2DRequest& r) {
 template <class V>
 void fields(V& v, harness::SceneRequest& r) {
   v("scene", r.scene), v("frames", r.frames), v("useDefaults", r.useDefaults);
-  v("params", r.params);
+  v("params", r.params), v("lean", r.lean);
 }
 
 // Results (after their outcome) -------------------------------------------------------------------

@@ -768,6 +768,18 @@ std::string brokenBuild(const Json& extra) {
   return broken;
 }
 
+// The ids of extra_data.mistakes ([{"task": 1, "mistake": "t1_wrong_sign", ...}, ...]), or of a
+// marker's list of ids.
+std::vector<std::string> mistakesOf(const Json& list) {
+  std::vector<std::string> ids;
+  if (!list.is_array()) return ids;
+  for (const Json& m : list) {
+    const Json id = m.is_object() ? m.value("mistake", Json()) : m;
+    if (id.is_string() && !id.get<std::string>().empty()) ids.push_back(id.get<std::string>());
+  }
+  return ids;
+}
+
 }  // namespace
 
 Outcome outcomeOfResults(const std::string& resultsJson) {
@@ -794,6 +806,7 @@ Outcome outcomeOfResults(const std::string& resultsJson) {
     return o;
   }
   o.flags = flagsOf(extra.value("incidents", Json::object()));
+  o.mistakes = mistakesOf(extra.value("mistakes", Json::array()));
   pointsOfTests(r["tests"], extra, o);
   o.reason = brokenBuild(extra);
   o.status = o.reason.empty() ? kGraded : kBuildFailed;
@@ -813,6 +826,7 @@ std::string markerJson(const std::string& fingerprint, const Outcome& o) {
   j["seconds"] = std::round(o.seconds * 100) / 100;
   j["reason"] = o.reason;
   j["flags"] = o.flags;
+  j["mistakes"] = o.mistakes;
   return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
@@ -836,6 +850,7 @@ std::optional<Outcome> outcomeOfMarker(const std::string& markerText,
   for (const Json& flag : j.value("flags", Json::array())) {
     if (flag.is_string()) o.flags.push_back(flag.get<std::string>());
   }
+  o.mistakes = mistakesOf(j.value("mistakes", Json::array()));
   return o;
 }
 
@@ -856,7 +871,7 @@ std::string csvField(const std::string& text) {
 std::string gradebookCsv(const std::vector<std::pair<const Submission*, const Outcome*>>& graded) {
   std::string csv =
       "student,email,sid,total,max,task1,task2,task3,task4,task5,task6,extra_credit,"
-      "status,seconds\r\n";
+      "status,seconds,mistakes\r\n";
   auto num = [](const std::optional<double>& x) { return x ? number(*x) : std::string(); };
   for (const auto& [s, o] : graded) {
     for (const Person& p : s->people) {
@@ -866,10 +881,28 @@ std::string gradebookCsv(const std::vector<std::pair<const Submission*, const Ou
       csv += num(o->extraCredit) + "," + csvField(o->status) + ",";
       std::ostringstream seconds;
       seconds << std::fixed << std::setprecision(1) << o->seconds;
-      csv += seconds.str() + "\r\n";
+      std::string mistakes;
+      for (const std::string& m : o->mistakes) mistakes += (mistakes.empty() ? "" : " ") + m;
+      csv += seconds.str() + "," + csvField(mistakes) + "\r\n";
     }
   }
   return csv;
+}
+
+std::string mistakeCounts(const std::vector<const Outcome*>& outcomes) {
+  std::map<std::string, int> count;
+  for (const Outcome* o : outcomes) {
+    for (const std::string& m : o->mistakes) ++count[m];
+  }
+  std::vector<std::pair<int, std::string>> ranked;
+  for (const auto& [id, n] : count) ranked.emplace_back(-n, id);
+  std::sort(ranked.begin(), ranked.end());
+  std::ostringstream out;
+  for (const auto& [minus, id] : ranked) {
+    out << "    " << std::left << std::setw(40) << id << std::right << std::setw(5) << -minus
+        << (minus == -1 ? " submission" : " submissions") << "\n";
+  }
+  return out.str();
 }
 
 std::string histogram(const std::vector<double>& totals) {

@@ -117,6 +117,8 @@ struct Outcome {
   /// Graded, but for a TA to look at: "the code crashed 3 times", "2 checks ran out of time",
   /// from results.json's extra_data.incidents.
   std::vector<std::string> flags;
+  /// The known mistakes the report named, by id (results.json's extra_data.mistakes).
+  std::vector<std::string> mistakes;
   bool hasPoints() const { return total.has_value(); }
 };
 
@@ -139,9 +141,14 @@ std::optional<Outcome> outcomeOfMarker(const std::string& markerText,
 std::string csvField(const std::string& text);
 
 /// gradebook.csv: the header `student,email,sid,total,max,task1..task6,extra_credit,status,
-/// seconds`, then one row per person of each submission that has an outcome, in key order.
+/// seconds,mistakes`, then one row per person of each submission that has an outcome, in key
+/// order; `mistakes` lists the ids of the known mistakes named, separated by spaces.
 /// Points are blank for a submission without a grade (grader error, timed out, crashed).
 std::string gradebookCsv(const std::vector<std::pair<const Submission*, const Outcome*>>& graded);
+
+/// How many submissions each known mistake was named for, most often first (ties by id), one
+/// line each; "" when none was named.
+std::string mistakeCounts(const std::vector<const Outcome*>& outcomes);
 
 /// A text histogram of `totals` in 10-point bins (0-9, 10-19, ...), one line per bin up to the
 /// highest total.

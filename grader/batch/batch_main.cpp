@@ -613,9 +613,11 @@ class Batch {
 
   int summary(double wall, int jobs) {
     std::vector<double> totals;
+    std::vector<const Outcome*> graded;
     std::string problems;
     for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
       if (!outcomes_[i]) continue;
+      graded.push_back(&*outcomes_[i]);
       if (outcomes_[i]->total) totals.push_back(*outcomes_[i]->total);
       problems += toLookAt(inv_.submissions[i].key, *outcomes_[i]);
     }
@@ -627,6 +629,10 @@ class Batch {
     if (!totals.empty()) {
       out << "  totals (points with extra credit) of " << totals.size() << " submissions:\n"
           << histogram(totals);
+    }
+    if (const std::string counts = mistakeCounts(graded); !counts.empty()) {
+      out << "  known mistakes named (grader/mistakes/; the gradebook's mistakes column):\n"
+          << counts;
     }
     if (!problems.empty()) {
       out << "  to look at (no grade; a task file missing or broken; code that crashed, ran out "

@@ -8,6 +8,8 @@
 
 #include "checks/budgeted_student.h"
 #include "checks/collector.h"
+#include "checks/recording_student.h"
+#include "checks/replays.h"
 #include "golden_checks.h"
 #include "gtest_flags.h"
 #include "probe/probe_client.h"
@@ -25,8 +27,8 @@ namespace {
 
 constexpr std::size_t kProbeOutputCap = 64u << 10;  // what the report keeps of the probe's output
 
-// The student's code while the checks run (a6::test::student()).
-BudgetedStudent* gStudent = nullptr;
+// The student's code while the checks run (a6::test::student()): the budgeted probe, recorded.
+harness::StudentCode* gStudent = nullptr;
 
 // Where a rubric item is written, for messages: "rubric.toml:45".
 std::string placeOf(const Rubric& rubric, const RubricItem& item) {
@@ -207,7 +209,8 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
   }
   BudgetedStudent student(probes.get(), hooksOf(probes.get()), unavailable);
   student.setTotalBudget(in.timeBudget);
-  gStudent = &student;
+  RecordingStudent recorded(student);
+  gStudent = &recorded;
   int skipped = 0;
   try {
     skipped = runAll(rubric, run, student, in.progress);
@@ -228,10 +231,14 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
   if (probes != nullptr) {
     try {
       collectIncidents(*probes, student, run);
+      // After the incidents are counted: the replays are feedback, never a check's.
+      if (in.replays) run.replays = runReplays(student, a6::test::imagedScenes());
+      run.replayFolder = a6::test::replayFolder();
     } catch (...) {
     }
   }
   gStudent = nullptr;
+  run.transcript = recorded.takeTranscript();
   return run;
 }
 

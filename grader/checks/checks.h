@@ -3,8 +3,10 @@
 // sandboxed probe. Student code never runs here: the suite's a6::test::student() is the probe.
 //
 // Takes: the seed and filter the checks are registered with; the built probes and what the
-// probe may see; the time budget. Gives: each check's outcome (TestOutcome), and what the
-// probes did (crashes, time-outs, their output) for the report.
+// probe may see; the time budget. Gives: each check's outcome (TestOutcome), what the probes
+// did (crashes, time-outs, their output) for the report, and the public checks' requests with
+// the student's answers (the transcript) for the mistakes stage, and the scenes' runs for the
+// report's replays.
 #pragma once
 
 #include <sys/types.h>
@@ -14,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "checks/scene_run.h"
+#include "checks/transcript.h"
 #include "report/report.h"
 #include "scoring/rubric.h"
 
@@ -58,6 +62,7 @@ struct ChecksInput {
   std::string unavailable;
   double timeBudget = kDefaultTimeBudget;
   bool progress = false;
+  bool replays = true;  ///< run each imaged scene once more for the report's replays
 };
 
 /// What running the checks gave.
@@ -67,6 +72,9 @@ struct ChecksRun {
   std::vector<std::string> notes;   ///< for instructors (sandbox protections, restarts)
   std::string probeOutput;          ///< what the probes printed, capped
   GradeReport::Incidents incidents;
+  Transcript transcript;          ///< what the public checks asked and the student's code answered
+  std::vector<SceneRun> replays;  ///< the imaged scenes run again at replay frames, for the report
+  std::filesystem::path replayFolder;  ///< the reference replays (render/replay.h) beside them
 };
 
 /// Runs every registered check against the probes of `input` (registerChecks first).

@@ -4,6 +4,7 @@
 
 #include "checks/budgeted_student.h"
 #include "comparisons.h"
+#include "suite.h"
 
 namespace a6::grader {
 
@@ -24,7 +25,7 @@ void Collector::OnTestPartResult(const ::testing::TestPartResult& part) {
   }
   if (!part.failed()) return;
   if (!current_.message.empty()) current_.message += "\n";
-  current_.message += part.message();
+  current_.message += a6::test::messageOf(part);
 }
 
 std::vector<std::filesystem::path> Collector::imagesOf(const ::testing::TestResult& result) {

@@ -9,11 +9,14 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "build/build.h"
 #include "build/startup.h"
 #include "intake/intake.h"
+#include "mistakes/mistakes.h"
+#include "replay/replays.h"
 #include "report/report.h"
 #include "sandbox/process.h"
 
@@ -96,6 +99,8 @@ class Grading {
     build();
     check();
     endWhatWasLeftRunning();
+    nameMistakes();
+    buildReplays();
     return finish();
   }
 
@@ -114,6 +119,8 @@ class Grading {
   void buildWith(Kit& kit);
   void check();
   void endWhatWasLeftRunning();
+  void nameMistakes();
+  void buildReplays();
   int finish();
 
   const GradeOptions& options_;
@@ -126,8 +133,11 @@ class Grading {
   bool graderFailed_ = false;
   process::UidClaim claim_;
   uid_t sandboxUid_ = kNobody;
-  std::vector<fs::path> secrets_;  // what the probe must not see either
-  std::string unavailable_;        // why there is no probe to run the checks against, or ""
+  std::vector<fs::path> secrets_;    // what the probe must not see either
+  std::string unavailable_;          // why there is no probe to run the checks against, or ""
+  Transcript transcript_;            // the public checks' requests and the student's answers
+  std::vector<SceneRun> sceneRuns_;  // the imaged scenes run again, for the replays
+  fs::path replayFolder_;            // the reference replays
 };
 
 // The report's heading, and a results.json from the start: if this process dies, Gradescope
@@ -299,6 +309,7 @@ void Grading::check() {
   in.unavailable = unavailable_;
   in.timeBudget = options_.timeBudget;
   in.progress = !options_.quiet;
+  in.replays = options_.filter.empty();
   if (!options_.quiet)
     std::fprintf(stderr, "a6_grade: running the checks (seed %llu)\n",
                  static_cast<unsigned long long>(report_.seed));
@@ -310,6 +321,9 @@ void Grading::check() {
   report_.incidents.crashes = run.incidents.crashes;
   report_.incidents.timeouts = run.incidents.timeouts;
   report_.incidents.startFailures += run.incidents.startFailures;
+  transcript_ = std::move(run.transcript);
+  sceneRuns_ = std::move(run.replays);
+  replayFolder_ = run.replayFolder;
 }
 
 // Whatever the submission left running: our re-parented children, and every process of its
@@ -321,7 +335,32 @@ void Grading::endWhatWasLeftRunning() {
   }
 }
 
-// 4. Score, 5. report.
+// 4. The known mistakes that the answers of the tasks whose physics checks failed match.
+void Grading::nameMistakes() {
+  std::set<int> failing;
+  for (const TestOutcome& t : report_.tests) {
+    const int task = t.name.rfind("Task", 0) == 0 && t.name.size() > 4 ? t.name[4] - '0' : 0;
+    if (!t.passed && task >= 1 && task <= 6) failing.insert(task);
+  }
+  try {
+    report_.mistakes = grader::nameMistakes(transcript_, mistakeLibrary(), failing);
+  } catch (const std::exception& e) {
+    report_.notes.push_back(std::string("naming the mistakes failed: ") + e.what());
+  }
+  transcript_ = Transcript{};
+}
+
+// 5. The replays: each imaged scene's run beside the reference's, measured for the report.
+void Grading::buildReplays() {
+  try {
+    report_.replays = grader::buildReplays(sceneRuns_, replayFolder_);
+  } catch (const std::exception& e) {
+    report_.notes.push_back(std::string("building the replays failed: ") + e.what());
+  }
+  sceneRuns_.clear();
+}
+
+// 6. Score, 7. report.
 int Grading::finish() {
   try {
     score(report_, rubric_);

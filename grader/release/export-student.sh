@@ -10,7 +10,9 @@
 #   .github/workflows/classroom.yml  grader/release/classroom.yml (GitHub Classroom)
 #   RELEASE                          the commit it was exported from
 # and never: the solution, the hidden checks (tests/hidden), the hidden images
-# (tests/golden/hidden), the reference force models, the wrong versions, the grader's own tests,
+# (tests/golden/hidden), the reference replays (tests/golden/replays), the reference force
+# models, the library of known mistakes
+# (grader/mistakes/library), the wrong versions, the grader's own tests,
 # the instructors' scripts and guide. Files are taken from git (`git ls-files`), so nothing
 # untracked or built travels. Last, the export is scanned for solution text (scan-release.sh);
 # a hit removes nothing silently: the export fails and names the file and line.
@@ -47,6 +49,7 @@ excluded=(
   solution/                          # the solution
   tests/hidden/                      # hidden checks (random inputs)
   tests/golden/hidden/               # hidden reference images
+  tests/golden/replays/              # the reference runs the grader's report replays
   tests/support/reference_models.inc # the reference force models (tasks 1 and 2 solved)
   tests/wrong/ tests/alternative/    # solution variants
   tests/grader/ tests/bench/ tests/release/ tests/packaging/   # use the solution
@@ -54,6 +57,7 @@ excluded=(
   tests/render/                      # the renderer's own tests: their sample cloth lists every
                                      # spring (task 4 solved), and students need not test it
   grader/release/ grader/gradescope/ # the export tools and the autograder package
+  grader/mistakes/library/           # the known mistakes and the tasks' reference answers
   grader/rubric.toml README.md       # replaced below
   docs/instructor.md                 # the graders' guide
   scripts/main.sh scripts/bench-grader.sh scripts/gradescope-package.sh

@@ -5,7 +5,9 @@
 #
 # ROOT is the instructors' checkout, DEST the release. Fails (exit 1), naming file and line, when
 # DEST holds
-#   - a graders' path: solution/, tests/hidden/, tests/golden/hidden/, reference_models.inc;
+#   - a graders' path: solution/, tests/hidden/, tests/golden/hidden/, tests/golden/replays/,
+#     reference_models.inc,
+#     grader/mistakes/library/ (the known mistakes and the tasks' reference answers);
 #   - a line of code of the solution, the hidden checks or the reference models: every line of
 #     those files that is not a comment, is at least 25 characters long (shorter ones, such as
 #     "return f;", are in any C++ file) and is not also in the public code (starter/ and
@@ -22,7 +24,9 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 found=0
 
-for path in solution tests/hidden tests/golden/hidden tests/support/reference_models.inc; do
+for path in solution tests/hidden tests/golden/hidden tests/golden/replays \
+            tests/support/reference_models.inc \
+            grader/mistakes/library; do
   if [ -e "$dest/$path" ]; then
     echo "scan: $path is in the release" >&2
     found=1
@@ -37,15 +41,20 @@ trimmed() { sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' "$@"; }
 
 # The secret lines, less the public ones: the solution's and the reference models' less what the
 # starter and the framework hold (a public test holds none of them: a line of the solution in a
-# test is the answer); the hidden checks' less the public tests' too (they share their helpers).
+# test is the answer); the hidden checks' and the library of known mistakes' less the public
+# tests' too (they share their helpers and the harness's names).
 shopt -s nullglob
 answers=("$root"/solution/*.cpp "$root"/tests/support/reference_models.inc)
-hidden_checks=("$root"/tests/hidden/*)
+hidden_checks=("$root"/tests/hidden/* "$root"/grader/mistakes/library/*)
 public_tests=("$root"/tests/*.cpp "$root"/tests/support/*.h "$root"/tests/support/*.cpp
               "$root"/tests/golden/*.cpp)
 code_lines() { trimmed "$@" | grep -v -e '^//' -e '^/\*' -e '^\*' | awk 'length($0) >= 25' | sort -u; }
+# (The grader's own code is public too, all but the library of known mistakes.)
 { trimmed "$root"/starter/*; find "$root/framework" -type f \( -name '*.h' -o -name '*.cpp' \) \
-    -exec sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' {} +; } | sort -u >"$work/public"
+    -exec sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' {} +
+  find "$root/grader" -path "$root/grader/mistakes/library" -prune -o -type f \
+    \( -name '*.h' -o -name '*.cpp' \) -exec sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' {} +
+} | sort -u >"$work/public"
 trimmed "${public_tests[@]}" | sort -u | sort -u - "$work/public" >"$work/public_and_tests"
 {
   code_lines "${answers[@]}" | comm -23 - "$work/public"

@@ -1,7 +1,8 @@
 # Report (report/): results.json (Gradescope's format), report.html and the terminal summary.
 # Gives a6_report.
 # report.h includes intake.h and build.h (their plain structs only), which include sandbox.h.
-add_library(a6_report STATIC ${CMAKE_CURRENT_SOURCE_DIR}/report/report.cpp)
+add_library(a6_report STATIC ${CMAKE_CURRENT_SOURCE_DIR}/report/report.cpp
+                             ${CMAKE_CURRENT_SOURCE_DIR}/report/replay_html.cpp)
 target_include_directories(a6_report PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_report PUBLIC a6_rubric PRIVATE nlohmann_json::nlohmann_json)
 target_compile_options(a6_report PRIVATE ${A6_WARNINGS})

@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "report/replay_html.h"
+
 namespace a6::grader {
 
 namespace {
@@ -115,10 +117,37 @@ std::string precisionNote(const ScoredItem& s) {
          ", relative: that is float rounding; the framework uses double. It costs nothing.\n";
 }
 
-// The text Gradescope shows under an item: why the task used the starter, then each failing
-// test with its message (which carries the hint), and the precision note.
+// The known mistake a failed item's task matched (grader/mistakes/), or null.
+const NamedMistake* mistakeOf(const GradeReport& report, const ScoredItem& s) {
+  if (s.failed == 0) return nullptr;
+  for (const NamedMistake& m : report.mistakes) {
+    if (m.task == s.item.task) return &m;
+  }
+  return nullptr;
+}
+
+// The first failed check's hint ("  hint: ..." in its message), for the head of an item's output;
+// "" when none has one.
+std::string firstHint(const ScoredItem& s) {
+  for (const TestOutcome* t : s.tests) {
+    const std::size_t at = t->passed ? std::string::npos : t->message.find("hint: ");
+    if (at == std::string::npos) continue;
+    const std::size_t end = t->message.find('\n', at);
+    return "Hint: " + t->message.substr(at + 6, end == std::string::npos ? end : end - at - 6);
+  }
+  return "";
+}
+
+// The text Gradescope shows under an item: the known mistake its answers match, or else the
+// first failed check's hint; why the task used the starter; then each failing test with its
+// message (the numbers, then the hint), and the precision note.
 std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
   std::string out;
+  if (const NamedMistake* m = mistakeOf(report, s)) {
+    out += m->text + "\n\n";
+  } else if (const std::string hint = firstHint(s); !hint.empty()) {
+    out += hint + "\n\n";
+  }
   if (const TaskBuild* t = buildOf(report, s.item.task); t != nullptr && t->usesStarter()) {
     out += t->file + " " + describeBuild(*t) + ".\n";
     if (!t->messages.empty()) out += "Compiler messages:\n" + cap(t->messages, kCompilerCap) + "\n";
@@ -291,38 +320,32 @@ void score(GradeReport& report, const Rubric& rubric) {
 
 // results.json ---------------------------------------------------------------------------------
 
-std::string resultsJson(const GradeReport& report) {
-  Json root;
-  root["score"] = report.score;
-  root["execution_time"] = static_cast<long long>(std::ceil(std::max(0.0, report.seconds)));
-  root["output"] = htmlEscape(overallOutput(report));
-  root["output_format"] = "simple_format";
-  root["test_output_format"] = "text";
-  root["test_name_format"] = "text";
-  root["visibility"] = "visible";
-  root["stdout_visibility"] = "hidden";
+namespace {
 
-  Json tests = Json::array();
-  for (const ScoredItem& s : report.items) {
-    Json t;
-    t["name"] = itemTitle(s);
-    t["number"] = s.number;
-    t["score"] = s.score;
-    // Extra credit carries its points in score over a max_score of 0, so the total can pass 100.
-    t["max_score"] = s.item.extraCredit ? 0.0 : s.item.points;
-    t["status"] = (s.failed == 0 && !s.tests.empty()) ? "passed" : "failed";
-    t["visibility"] = toString(s.item.visibility);
-    t["output"] = itemOutput(report, s);
-    Json tags = Json::array();
-    if (s.item.task > 0) tags.push_back("task" + std::to_string(s.item.task));
-    if (s.item.extraCredit) tags.push_back("extra_credit");
-    if (s.item.allOrNothing) tags.push_back("all_or_nothing");
-    t["tags"] = tags;
-    tests.push_back(std::move(t));
+// One rubric item as a Gradescope test.
+Json itemJson(const GradeReport& report, const ScoredItem& s) {
+  Json t;
+  t["name"] = itemTitle(s);
+  t["number"] = s.number;
+  t["score"] = s.score;
+  // Extra credit carries its points in score over a max_score of 0, so the total can pass 100.
+  t["max_score"] = s.item.extraCredit ? 0.0 : s.item.points;
+  t["status"] = (s.failed == 0 && !s.tests.empty()) ? "passed" : "failed";
+  t["visibility"] = toString(s.item.visibility);
+  t["output"] = itemOutput(report, s);
+  Json tags = Json::array();
+  if (s.item.task > 0) tags.push_back("task" + std::to_string(s.item.task));
+  if (s.item.extraCredit) tags.push_back("extra_credit");
+  if (s.item.allOrNothing) tags.push_back("all_or_nothing");
+  t["tags"] = tags;
+  if (const NamedMistake* m = mistakeOf(report, s)) {
+    t["extra_data"] = {{"mistake", m->id}, {"mistake_text", m->text}};
   }
-  root["tests"] = std::move(tests);
+  return t;
+}
 
-  // For instructors and scripts (never shown to students).
+// For instructors and scripts (never shown to students).
+Json extraData(const GradeReport& report) {
   Json extra;
   extra["seed"] = std::to_string(report.seed);
   extra["submission"] = report.submission;
@@ -339,6 +362,11 @@ std::string resultsJson(const GradeReport& report) {
   Json build = Json::object();
   for (const TaskBuild& t : report.build.tasks) build[t.file] = buildKeyword(t);
   extra["build"] = std::move(build);
+  Json mistakes = Json::array();
+  for (const NamedMistake& m : report.mistakes) {
+    mistakes.push_back({{"task", m.task}, {"mistake", m.id}, {"evidence", m.evidence}});
+  }
+  extra["mistakes"] = std::move(mistakes);
   extra["warnings"] = report.warnings;
   extra["notes"] = report.notes;
   extra["errors"] = report.errors;
@@ -346,8 +374,25 @@ std::string resultsJson(const GradeReport& report) {
   extra["incidents"] = {{"crashes", report.incidents.crashes},
                         {"timeouts", report.incidents.timeouts},
                         {"start_failures", report.incidents.startFailures}};
-  root["extra_data"] = std::move(extra);
+  return extra;
+}
 
+}  // namespace
+
+std::string resultsJson(const GradeReport& report) {
+  Json root;
+  root["score"] = report.score;
+  root["execution_time"] = static_cast<long long>(std::ceil(std::max(0.0, report.seconds)));
+  root["output"] = htmlEscape(overallOutput(report));
+  root["output_format"] = "simple_format";
+  root["test_output_format"] = "text";
+  root["test_name_format"] = "text";
+  root["visibility"] = "visible";
+  root["stdout_visibility"] = "hidden";
+  Json tests = Json::array();
+  for (const ScoredItem& s : report.items) tests.push_back(itemJson(report, s));
+  root["tests"] = std::move(tests);
+  root["extra_data"] = extraData(report);
   // Student-derived text may not be valid UTF-8: replace bad bytes rather than throw.
   return root.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
@@ -472,6 +517,12 @@ th { background: #f5f5f5; white-space: nowrap; }
 .num { text-align: right; font-variant-numeric: tabular-nums; }
 .pass { color: #17692b; font-weight: 600; } .fail { color: #b3261e; font-weight: 600; }
 .note { color: #555; font-style: italic; }
+.mistake { background: #fff4e5; border-left: 4px solid #e8710a; padding: .5em .8em; }
+.replay-box { border-top: 1px solid #eee; margin-top: 1em; } .reading { font-weight: 600; }
+.replay { display: flex; gap: 1.5em; flex-wrap: wrap; align-items: flex-start; }
+.views { display: flex; gap: .8em; } canvas { border: 1px solid #ccc; }
+.controls { margin: .4em 0; } .controls .time { font-family: monospace; margin: 0 .5em; }
+.plots { display: flex; flex-direction: column; gap: .4em; }
 .box { padding: .6em 1em; border-radius: 6px; margin: .6em 0; }
 .error { background: #fdecea; border: 1px solid #f5c2c0; } .warn { background: #fff7e0; border: 1px solid #f0d890; }
 pre { background: #f7f7f9; border: 1px solid #e4e4e8; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
@@ -592,9 +643,13 @@ void htmlSubmission(std::ostringstream& out, const GradeReport& report) {
 }
 
 // One item with its tests: what each said when it failed, its images, its time.
-void htmlItem(std::ostringstream& out, const ScoredItem& s) {
+void htmlItem(std::ostringstream& out, const GradeReport& report, const ScoredItem& s) {
   out << "<h2 id=\"item-" << s.number << "\">" << s.number << " " << htmlEscape(s.item.name)
       << " &mdash; " << fmt(s.score) << " / " << fmt(s.item.points) << "</h2>\n";
+  if (const NamedMistake* m = mistakeOf(report, s)) {
+    out << "<p class=\"mistake\"><strong>The mistake, named:</strong> " << htmlEscape(m->text)
+        << "</p>\n";
+  }
   if (s.tests.empty()) {
     out << "<p class=\"fail\">No test matched this item.</p>\n";
     return;
@@ -622,7 +677,8 @@ std::string htmlReport(const GradeReport& report) {
   htmlHead(out, report);
   htmlScoreTable(out, report);
   htmlSubmission(out, report);
-  for (const ScoredItem& s : report.items) htmlItem(out, s);
+  for (const ScoredItem& s : report.items) htmlItem(out, report, s);
+  htmlReplays(out, report.replays);
   if (!report.probeOutput.empty()) {
     out << "<h2>Probe output</h2>\n<details><summary>What the student's code printed "
         << "(capped; never used for scoring)</summary><pre>" << htmlEscape(report.probeOutput)
@@ -673,6 +729,9 @@ std::string terminalSummary(const GradeReport& report, bool color) {
   }
   for (const TaskBuild& t : report.build.tasks) {
     if (t.usesStarter()) out << "  " << red << t.file << ": " << describeBuild(t) << reset << "\n";
+  }
+  for (const NamedMistake& m : report.mistakes) {
+    out << "  " << red << "task " << m.task << ": " << m.text << reset << "\n";
   }
   for (const std::string& w : report.warnings) out << "  warning: " << w << "\n";
   for (const std::string& n : report.notes) out << "  note: " << n << "\n";

@@ -19,6 +19,8 @@
 
 #include "build/build.h"
 #include "intake/intake.h"
+#include "mistakes/named.h"
+#include "replay/replay_view.h"
 #include "scoring/rubric.h"
 
 namespace a6::grader {
@@ -54,6 +56,11 @@ struct GradeReport {
   Build build;
   std::vector<TestOutcome> tests;
   std::vector<ScoredItem> items;
+  /// The known mistakes the answers of failing tasks matched (grader/mistakes/), in task order:
+  /// each failed item of its task leads with the mistake's sentence.
+  std::vector<NamedMistake> mistakes;
+  /// Each imaged scene's run beside the reference's (grader/replay/): the report's players.
+  std::vector<ReplayView> replays;
   double score = 0;        ///< regular points plus extra credit
   double maxScore = 0;     ///< the rubric's total (extra credit not included)
   double extraCredit = 0;  ///< the part of `score` earned by extra-credit items

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "harness/student_code.h"
 
@@ -26,5 +27,17 @@ harness::StudentCode& student();
 /// the report shows them (the grader: its folders mean nothing to a student).
 enum class ImagePaths { Shown, InTheReportOnly };
 bool registerGoldenChecks(const std::string& failuresDir, ImagePaths paths = ImagePaths::Shown);
+
+/// A scene the public images check, and the last frame one of them shows.
+struct ImagedScene {
+  std::string scene;
+  int lastFrame = 0;
+  int task = 0;  ///< the task its images are filed under (the first image's)
+};
+/// The scenes of the public manifest, in the manifest's order (empty without a manifest).
+std::vector<ImagedScene> imagedScenes();
+/// The folder of the reference replays (render/replay.h), beside the manifest: graders'
+/// material, read by the grader's process only.
+std::string replayFolder();
 
 }  // namespace a6::test

@@ -25,6 +25,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -312,6 +313,26 @@ bool registerManifest(const std::string& path, const std::string& suffix, const 
 // Registers one test per manifest image (false: the manifest could not be read, and one
 // failing test, Manifest.Reads, says why), then the hidden images (graders only: a student
 // release has no hidden/ folder) beside it, as GoldenTask<N>Hidden.<name>.
+std::vector<ImagedScene> imagedScenes() {
+  std::vector<ImagedScene> scenes;
+  const golden::ManifestResult read = golden::readManifest(config().manifest);
+  if (!read) return scenes;
+  for (const GoldenImage& image : read.manifest.images) {
+    auto same = [&](const ImagedScene& s) { return s.scene == image.scene; };
+    auto found = std::find_if(scenes.begin(), scenes.end(), same);
+    if (found == scenes.end()) {
+      scenes.push_back({image.scene, image.frame, image.task});
+    } else {
+      found->lastFrame = std::max(found->lastFrame, image.frame);
+    }
+  }
+  return scenes;
+}
+
+std::string replayFolder() {
+  return (std::filesystem::path(config().manifest).parent_path() / "replays").string();
+}
+
 bool registerGoldenChecks(const std::string& failuresDir, ImagePaths paths) {
   config().failures = std::filesystem::absolute(failuresDir).lexically_normal().string();
   config().showPaths = paths == ImagePaths::Shown;

@@ -12,6 +12,8 @@
 #include <set>
 #include <sstream>
 
+#include "report/replay_html.h"
+
 namespace a6::grader {
 namespace {
 
@@ -451,6 +453,114 @@ TEST(Terminal, SummaryListsEveryItemWithPointsAndCounts) {
   EXPECT_NE(text.find("cloth.cpp: did not compile"), std::string::npos) << text;
   EXPECT_EQ(text.find("\033["), std::string::npos) << "no colour when not asked";
   EXPECT_NE(terminalSummary(sampleReport(), true).find("\033[31m"), std::string::npos);
+}
+
+// The known mistake named --------------------------------------------------------------------
+
+TEST(Mistake, LeadsEveryFailedItemOfItsTaskAndGoesInExtraData) {
+  GradeReport report = sampleReport();
+  report.mistakes.push_back({"t1_wrong_sign", 1,
+                             "Your spring force behaves exactly like one "
+                             "whose spring term has the wrong sign.",
+                             3});
+  const json r = json::parse(resultsJson(report));
+  int named = 0;
+  for (const json& t : r["tests"]) {
+    const bool taskOne = t["tags"].dump().find("\"task1\"") != std::string::npos;
+    if (taskOne && t["status"] == "failed") {
+      ++named;
+      EXPECT_EQ(t["extra_data"]["mistake"], "t1_wrong_sign");
+      EXPECT_EQ(t["output"].get<std::string>().rfind("Your spring force behaves", 0), 0u)
+          << t["output"];
+    } else {
+      EXPECT_FALSE(t.contains("extra_data")) << t.dump(2);
+    }
+  }
+  EXPECT_EQ(named, 1);
+  EXPECT_EQ(r["extra_data"]["mistakes"][0]["mistake"], "t1_wrong_sign");
+  const std::string html = htmlReport(report);
+  EXPECT_NE(html.find("class=\"mistake\""), std::string::npos);
+  EXPECT_NE(terminalSummary(report, false).find("task 1: Your spring force"), std::string::npos);
+}
+
+TEST(Mistake, NoneNamedLeavesTheOutputAsItWas) {
+  const json r = json::parse(resultsJson(sampleReport()));
+  EXPECT_EQ(r["extra_data"]["mistakes"], json::array());
+  for (const json& t : r["tests"]) EXPECT_FALSE(t.contains("extra_data"));
+}
+
+// Replays ----------------------------------------------------------------------------------------
+
+// The largest committed reference replay as both runs (the size of a real one).
+ReplayView largestReplay() {
+  ReplayView v;
+  std::uintmax_t most = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(A6_SOURCE_DIR) / "tests/golden/replays")) {
+    if (e.file_size() <= most) continue;
+    most = e.file_size();
+    v.scene = e.path().stem().string();
+    v.reference = v.student = readAll(e.path());
+  }
+  v.task = 4;
+  const json packed = json::parse(v.reference);
+  v.frames = packed["frames"].get<std::vector<int>>();
+  for (const int f : v.frames) {
+    v.times.push_back(f / 60.0);
+    v.error.push_back(f > 30 ? 0.05 * f : 0.0);
+    v.studentEnergy.push_back(10 + 0.1 * f);
+    v.referenceEnergy.push_back(10.0);
+  }
+  v.errorMeasure = "RMS distance of the particles";
+  v.threshold = 0.04;
+  v.parted = 31;
+  v.reading = "Your energy grows where the reference's does not.";
+  return v;
+}
+
+TEST(Replay, APlayerWithItsPlotsAndDataAtMost300KBForTheLargestScene) {
+  const GradeReport plain = sampleReport();
+  GradeReport with = plain;
+  with.replays.push_back(largestReplay());
+  const std::string before = htmlReport(plain), after = htmlReport(with);
+  const std::size_t added = after.size() - before.size();
+  std::printf("[ replay   ] %s: the replay adds %zu bytes\n", with.replays[0].scene.c_str(), added);
+  EXPECT_LE(added, 300u * 1024) << "a replay of the largest scene adds at most ~300 KB";
+  EXPECT_NE(after.find("<canvas"), std::string::npos);
+  EXPECT_NE(after.find("type=\"range\""), std::string::npos) << "a time scrubber";
+  EXPECT_NE(after.find("go to where they part"), std::string::npos);
+  EXPECT_NE(after.find("<svg class=\"plot\""), std::string::npos);
+  EXPECT_NE(after.find("kinetic + potential energy"), std::string::npos);
+  EXPECT_NE(after.find("Your energy grows"), std::string::npos);
+  // Self-contained: no address to fetch anything from (the SVG's namespace is a name, not a
+  // fetch).
+  for (const char* fetch : {"src=\"http", "href=\"http", "url(", "@import", "<link"}) {
+    EXPECT_EQ(after.find(fetch), std::string::npos) << fetch;
+  }
+}
+
+TEST(Replay, ANoteInsteadWhenThereIsNone) {
+  GradeReport report = sampleReport();
+  ReplayView v;
+  v.scene = "fire";
+  v.missing = "your code failed while the scene ran again for this replay: boom </script>";
+  report.replays.push_back(v);
+  const std::string html = htmlReport(report);
+  EXPECT_NE(html.find("No replay: your code failed"), std::string::npos);
+  EXPECT_EQ(html.find("boom </script>"), std::string::npos) << "escaped";
+}
+
+TEST(Replay, PlotsAreDrawnWithinTheirRangeAndMarkWhereTheyPart) {
+  const std::vector<double> times = {0, 1, 2}, ys = {0, 1e30, NAN};
+  const std::string svg =
+      svgPlot("energy", "J", times, {{"yours", "#e8710a", false, &ys}}, {0, 10}, 5, 1);
+  // 0 J at the bottom edge (y 124), 1e30 J clamped to the top edge (y 22), NaN a gap.
+  EXPECT_NE(svg.find("M64.0 124.0 L257.0 22.0\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("stroke=\"#b3261e\""), std::string::npos) << "the mark where they part";
+  EXPECT_EQ(svg.find("nan"), std::string::npos) << svg;
+  EXPECT_EQ(svg.find("e+30"), std::string::npos) << "off the chart: drawn on its edge";
+  EXPECT_EQ(withUnit(0.012345, "m"), "0.0123 m");
+  EXPECT_EQ(withUnit(-4.5678, "J"), "-4.57 J");
+  EXPECT_EQ(withUnit(NAN, "J"), "not a number");
 }
 
 }  // namespace

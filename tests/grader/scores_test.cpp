@@ -126,6 +126,47 @@ std::string summary(const Graded& g) {
   return out.str();
 }
 
+// The ids of the known mistakes results.json names (extra_data.mistakes).
+std::set<std::string> mistakesNamed(const json& results) {
+  std::set<std::string> ids;
+  for (const json& m : results["extra_data"].value("mistakes", json::array())) {
+    ids.insert(m.value("mistake", std::string()));
+  }
+  return ids;
+}
+
+// A correct solution is never told it made a known mistake: none in extra_data, none on an item.
+void expectNoMistakeNamed(const Graded& g) {
+  EXPECT_EQ(mistakesNamed(g.results), std::set<std::string>{}) << g.results.dump(2).substr(0, 4000);
+  for (const json& t : g.results["tests"]) {
+    EXPECT_FALSE(t.contains("extra_data")) << t.dump(2);
+  }
+}
+
+// A wrong version with a model in the library is named, first in every failed item of its
+// task (Gradescope's output leads with it, extra_data carries it); no other mistake is named.
+void expectMistakeNamed(const Graded& g, const std::string& name, const std::set<int>& failing) {
+  const std::string id = a6::test::staging::expectedMistake(name);
+  const std::set<std::string> named = mistakesNamed(g.results);
+  std::printf("[ mistakes ] %s: expected %s, named %s\n", name.c_str(),
+              id.empty() ? "none" : id.c_str(), json(named).dump().c_str());
+  if (id.empty()) return;
+  EXPECT_EQ(named, std::set<std::string>{id}) << name << ": the report must name its mistake";
+  for (const json& t : g.results["tests"]) {
+    const bool ofTask = std::any_of(failing.begin(), failing.end(), [&](int task) {
+      const json tags = t.value("tags", json::array());
+      return std::find(tags.begin(), tags.end(), "task" + std::to_string(task)) != tags.end();
+    });
+    if (!ofTask || t.value("status", "") != "failed") continue;
+    ASSERT_TRUE(t.contains("extra_data")) << t.dump(2);
+    EXPECT_EQ(t["extra_data"].value("mistake", ""), id) << t.dump(2);
+    const std::string text = t["extra_data"].value("mistake_text", "");
+    EXPECT_FALSE(text.empty());
+    EXPECT_EQ(t.value("output", "").rfind(text, 0), 0u) << "the output leads with the mistake:\n"
+                                                        << t.value("output", "").substr(0, 600);
+  }
+}
+
 void expectCompleted(const Graded& g) {
   ASSERT_TRUE(rubric().ok()) << rubric().error;
   EXPECT_EQ(g.status, 0) << summary(g);
@@ -165,6 +206,19 @@ TEST(Scores, TheSolutionGetsEveryPoint) {
   EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), all) << summary(g);
   const auto got = perTask(g.results, false), full = perTask(g.results, true);
   for (const auto& [task, points] : full) EXPECT_DOUBLE_EQ(got.at(task), points) << "task " << task;
+  expectNoMistakeNamed(g);
+}
+
+// The hidden checks draw other inputs at another seed: still every point, and no mistake named.
+TEST(Scores, TheSolutionAtAnotherSeedIsNamedNoMistake) {
+  const fs::path dir = outDir("solution_seed");
+  const Graded g = grade(kSource / "solution", dir / "out", "--seed 424242");
+  expectCompleted(g);
+  if (HasFatalFailure()) return;
+  double all = 0;
+  for (const RubricItem& item : rubric().items) all += item.points;
+  EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), all) << summary(g);
+  expectNoMistakeNamed(g);
 }
 
 TEST(Scores, TheStarterGetsNothing) {
@@ -227,6 +281,7 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
   for (const int t : failing) named += (named.empty() ? "" : " ") + std::to_string(t);
   std::printf("[ scores   ] %s (fail: %s): score %s; per task%s\n", name.c_str(), named.c_str(),
               g.results["score"].dump().c_str(), table.str().c_str());
+  expectMistakeNamed(g, name, failing);
   // Which checks failed outside the wrong tasks, and whether an image may.
   for (const auto& [check, outcome] : g.results["extra_data"]["tests"].items()) {
     if (outcome != "failed") continue;
@@ -280,6 +335,7 @@ TEST_P(CorrectAlternative, GetsEveryPoint) {
   double all = 0;
   for (const RubricItem& item : rubric().items) all += item.points;
   EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), all) << g.results.dump(2).substr(0, 8000);
+  expectNoMistakeNamed(g);
   std::string notes;
   for (const json& t : g.results["tests"]) {
     const std::string output = t.value("output", "");

@@ -164,6 +164,20 @@ inline std::set<int> failingTasks(const std::string& name) {
   return tasks;
 }
 
+/// The known mistake the grader must name for a wrong version: its EXPECT file's "mistake: <id>"
+/// line (grader/mistakes/library/), or "" when it has none.
+inline std::string expectedMistake(const std::string& name) {
+  std::istringstream in(readAll(kSource / "tests" / "wrong" / name / "EXPECT"));
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("mistake:", 0) != 0) continue;
+    std::istringstream id(line.substr(8));
+    std::string word;
+    id >> word;
+    return word;
+  }
+  return "";
+}
+
 // ---- archives -----------------------------------------------------------------------------------
 
 struct Entry {

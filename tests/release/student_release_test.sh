@@ -36,8 +36,9 @@ fi
 pass "exported: $(tail -1 "$work/export.log")"
 
 # 2. Contents.
-for absent in solution tests/hidden tests/golden/hidden tests/support/reference_models.inc \
-              tests/wrong tests/grader docs/instructor.md scripts/main.sh .ci; do
+for absent in solution tests/hidden tests/golden/hidden tests/golden/replays \
+              tests/support/reference_models.inc \
+              grader/mistakes/library tests/wrong tests/grader docs/instructor.md scripts/main.sh .ci; do
   [ -e "$release/$absent" ] && fail "$absent is in the release"
 done
 for present in README.md scripts/install-deps.sh scripts/test.sh scripts/check.sh \

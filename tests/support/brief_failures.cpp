@@ -5,6 +5,8 @@
 #include <sstream>
 #include <utility>
 
+#include "suite.h"
+
 namespace a6::test {
 
 namespace {
@@ -33,7 +35,7 @@ void BriefFailures::OnTestEnd(const ::testing::TestInfo& info) {
                               std::to_string(part.line_number());
     log_ += where + ": Failure\n" + part.message() + "\n";
     if (f.first.empty()) {
-      f.first = part.message();
+      f.first = messageOf(part);
     } else {
       ++f.more;
     }

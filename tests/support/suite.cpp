@@ -1,9 +1,10 @@
 #include "suite.h"
 
-#include <charconv>
+#include <cstdio>
 #include <limits>
 
 #include "comparisons.h"
+#include "quantities.h"
 
 namespace a6::test {
 
@@ -19,9 +20,21 @@ std::string currentTask() {
 }
 
 std::string num(double value) {
+  if (value == 0) return "0";  // never "-0"
+  // Seven significant digits: more than any tolerance needs to show a difference, and none of
+  // the binary noise (5.199999999999999, 0.00035000000000000005).
   char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return ec == std::errc() ? std::string(buffer, end) : std::string("?");
+  std::snprintf(buffer, sizeof buffer, "%.7g", value);
+  std::string text = buffer;
+  // 2e-05 -> 2e-5, 1e+30 -> 1e30.
+  if (const std::size_t e = text.find('e'); e != std::string::npos) {
+    std::string exponent = text.substr(e + 1);
+    const bool negative = exponent[0] == '-';
+    exponent = exponent.substr(exponent[0] == '-' || exponent[0] == '+' ? 1 : 0);
+    exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+    text = text.substr(0, e + 1) + (negative ? "-" : "") + exponent;
+  }
+  return text;
 }
 
 std::string str(const Vec2& v) { return "(" + num(v.x()) + ", " + num(v.y()) + ")"; }
@@ -33,6 +46,11 @@ std::string str(const Particle& p) {
 }
 
 std::string hint(const std::string& text) { return "\n  hint: " + text; }
+
+std::string messageOf(const ::testing::TestPartResult& part) {
+  const std::string message = part.message();
+  return message.rfind("Failed\n", 0) == 0 ? message.substr(7) : message;
+}
 
 namespace {
 
@@ -67,44 +85,51 @@ bool recordComparison(double difference, const Tolerance& tol) {
   return passed;
 }
 
-std::string toleranceText(const Tolerance& tol) {
-  return "(tolerance " + num(tol.absolute()) + (tol.exact ? ": " : ", ") + num(tol.relative) +
-         " of " + num(tol.scale) + ")";
+// " N", or "" for a quantity without a unit.
+std::string unitText(const std::string& unit) { return unit.empty() ? "" : " " + unit; }
+
+std::string toleranceText(const Tolerance& tol, const std::string& unit) {
+  return "(tolerance " + num(tol.absolute()) + unitText(unit) + (tol.exact ? ": " : ", ") +
+         num(tol.relative) + " of " + num(tol.scale) + unitText(unit) + ")";
 }
 
-::testing::AssertionResult compareVec(const char* what, const Vec2& actual, const Vec2& expected,
+// `what`: the compared quantity in words; `unit`: its unit, or "".
+::testing::AssertionResult compareVec(const std::string& what, const std::string& unit,
+                                      const Vec2& actual, const Vec2& expected,
                                       const Tolerance& tol) {
   const Vec2 diff = actual - expected;
   const double largest =
       finite(actual) ? diff.cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
   if (recordComparison(largest, tol)) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure()
-         << currentTask() << ": " << what << "\n  expected: " << str(expected)
-         << "\n  actual:   " << str(actual) << "\n  " << toleranceText(tol);
+         << currentTask() << ": " << what << "\n  expected: " << str(expected) << unitText(unit)
+         << "\n  actual:   " << str(actual) << unitText(unit) << "\n  " << toleranceText(tol, unit);
 }
 
-::testing::AssertionResult compareScalar(const char* what, double actual, double expected,
-                                         const Tolerance& tol) {
+::testing::AssertionResult compareScalar(const std::string& what, const std::string& unit,
+                                         double actual, double expected, const Tolerance& tol) {
   const double diff =
       std::isfinite(actual) ? actual - expected : std::numeric_limits<double>::infinity();
   if (recordComparison(std::abs(diff), tol)) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure()
-         << currentTask() << ": " << what << "\n  expected: " << num(expected)
-         << "\n  actual:   " << num(actual) << "\n  " << toleranceText(tol);
+         << currentTask() << ": " << what << "\n  expected: " << num(expected) << unitText(unit)
+         << "\n  actual:   " << num(actual) << unitText(unit) << "\n  " << toleranceText(tol, unit);
 }
 
 }  // namespace
 
 ::testing::AssertionResult vecNear(const char* actualExpr, const char*, const char*,
                                    const Vec2& actual, const Vec2& expected, const Tolerance& tol) {
-  ::testing::AssertionResult result = compareVec(actualExpr, actual, expected, tol);
+  const Quantity q = quantityOf(actualExpr);
+  ::testing::AssertionResult result = compareVec(q.words, q.unit, actual, expected, tol);
   if (!result) ++currentLog().reportedFailures;
   return result;
 }
 
 ::testing::AssertionResult scalarNear(const char* actualExpr, const char*, const char*,
                                       double actual, double expected, const Tolerance& tol) {
-  ::testing::AssertionResult result = compareScalar(actualExpr, actual, expected, tol);
+  const Quantity q = quantityOf(actualExpr);
+  ::testing::AssertionResult result = compareScalar(q.words, q.unit, actual, expected, tol);
   if (!result) ++currentLog().reportedFailures;
   return result;
 }
@@ -113,19 +138,21 @@ bool ManyInputs::record(const ::testing::AssertionResult& result, const std::str
   ++total_;
   if (result) return true;
   if (failed_++ == 0) {
-    first_ = std::string(result.message()) + (input.rfind('\n', 0) == 0 ? "" : "\n  ") + input;
+    const std::size_t text = input.find_first_not_of(" ");
+    first_ = std::string(result.message()) + (input.rfind('\n', 0) == 0 ? "" : "\n  ") +
+             (text == std::string::npos ? input : input.substr(text));
   }
   return false;
 }
 
 bool ManyInputs::expectNear(const Vec2& actual, const Vec2& expected, const Tolerance& tol,
                             const std::string& input) {
-  return record(compareVec(what_.c_str(), actual, expected, tol), input);
+  return record(compareVec(what_, unit_, actual, expected, tol), input);
 }
 
 bool ManyInputs::expectNear(double actual, double expected, const Tolerance& tol,
                             const std::string& input) {
-  return record(compareScalar(what_.c_str(), actual, expected, tol), input);
+  return record(compareScalar(what_, unit_, actual, expected, tol), input);
 }
 
 void ManyInputs::fail(const std::string& message) {

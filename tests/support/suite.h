@@ -26,6 +26,8 @@ std::string str(const Particle& p);
 
 /// Appended to a failure: what the student should look at.
 std::string hint(const std::string& text);
+/// A failure's message for people: GoogleTest's "Failed" line (ADD_FAILURE's) left out.
+std::string messageOf(const ::testing::TestPartResult& part);
 
 /// True when every component is finite.
 inline bool finite(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
@@ -75,12 +77,23 @@ inline Tolerance modelError(double absolute, double scale) {
 ///   ManyInputs inputs("directions");
 ///   for (...) inputs.expectNear(actual, expected, tol, input(r));
 ///   inputs.report(hint("..."));   // or let it go out of scope
+/// A unit, for messages: values are printed with it ("(-10, 0) N").
+struct Unit {
+  const char* name;
+};
+inline constexpr Unit kNewton{"N"}, kMetre{"m"}, kMetrePerSecond{"m/s"}, kMomentum{"kg·m/s"},
+    kAngularMomentum{"kg·m²/s"};
+
 class ManyInputs {
  public:
   /// The failure is reported at the line that made this object (the check's own line).
   explicit ManyInputs(std::string what, const char* file = __builtin_FILE(),
                       int line = __builtin_LINE())
       : what_(std::move(what)), file_(file), line_(line) {}
+  /// With the unit of the compared values, for the message (kNewton, ...).
+  ManyInputs(std::string what, Unit unit, const char* file = __builtin_FILE(),
+             int line = __builtin_LINE())
+      : what_(std::move(what)), unit_(unit.name), file_(file), line_(line) {}
   ManyInputs(const ManyInputs&) = delete;
   ManyInputs& operator=(const ManyInputs&) = delete;
   ~ManyInputs() { report(""); }
@@ -98,6 +111,7 @@ class ManyInputs {
  private:
   bool record(const ::testing::AssertionResult& result, const std::string& input);
   std::string what_;
+  std::string unit_;
   const char* file_;
   int line_;
   std::string first_;

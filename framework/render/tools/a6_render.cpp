@@ -5,6 +5,7 @@
 //   a6_render --scene cloth_shear --times 0,0.5,1 [--size 512x512] [--out DIR] [--strain]
 //   a6_render --scene pendulum,rope --frames 0,30,60 --sheet [--out DIR]
 //   a6_render_solution --goldens [--only NAME,...] [--variant SUFFIX]
+//   a6_render_solution --replays [--out DIR]
 //
 // Scenes run through the same harness request as the golden tests (StudentCode::runScene,
 // in-process here), so what this program draws is what the tests compare.
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -27,6 +29,7 @@
 #include "image/image.h"
 #include "render/golden.h"
 #include "render/renderer.h"
+#include "render/replay.h"
 #include "scenes/scene.h"
 
 #ifndef A6_RENDER_STUDENT_SET
@@ -57,6 +60,8 @@ struct Options {
   int columns = 0;        ///< 0: one row per scene
   bool list = false, help = false;
   bool goldens = false;
+  bool replays = false;  ///< write the reference replays (out: --out, default <goldenDir>/replays)
+  bool outGiven = false;
   std::string goldenDir = A6_GOLDEN_DIR;
   std::vector<std::string> only;
   std::string variant;
@@ -66,6 +71,7 @@ std::string usage() {
   return "usage: a6_render --scene NAME[,NAME...] (--frames N,N,... | --times S,S,...) [options]\n"
          "       a6_render --list\n"
          "       a6_render_solution --goldens [--golden-dir DIR] [--only NAME,...] [--variant S]\n"
+         "       a6_render_solution --replays [--golden-dir DIR] [--out DIR]\n"
          "\n"
          "Renders scenes headlessly (OpenGL 3.3 core on OSMesa or EGL) to PNG.\n"
          "  --scene NAMES       scenes to render (comma-separated; --list shows them)\n"
@@ -85,6 +91,9 @@ std::string usage() {
          "  --only NAMES        --goldens: only these images (comma-separated)\n"
          "  --variant SUFFIX    --goldens: write <name>.<SUFFIX>.png as an extra approved\n"
          "                      baseline instead of replacing the primary one\n"
+         "  --replays           write the reference replays the grader's report plays beside a\n"
+         "                      student's run: <scene>.json for every scene of the manifest, in\n"
+         "                      --out (default: <golden-dir>/replays; needs the solution)\n"
          "This binary runs the '" A6_RENDER_STUDENT "' student files.\n";
 }
 
@@ -143,6 +152,8 @@ std::string parse(int argc, char** argv, Options& o) {
       o.strain = true;
     } else if (name == "--goldens") {
       o.goldens = true;
+    } else if (name == "--replays") {
+      o.replays = true;
     } else if (name == "--sheet") {
       o.sheet = true;
       if (hasValue) o.sheetPath = value;
@@ -176,6 +187,7 @@ std::string parse(int argc, char** argv, Options& o) {
       }
     } else if (name == "--out") {
       o.out = value;
+      o.outGiven = true;
     } else if (name == "--backend") {
       if (!parseHeadlessBackend(value, &o.backend)) {
         return "--backend " + value + ": expected auto, osmesa or egl";
@@ -196,7 +208,7 @@ std::string parse(int argc, char** argv, Options& o) {
       return "unknown option " + name;
     }
   }
-  if (o.help || o.list || o.goldens) return "";
+  if (o.help || o.list || o.goldens || o.replays) return "";
   if (o.scenes.empty()) return "say which scene to render: --scene NAME (--list shows them)";
   if (o.frames.empty() && o.times.empty())
     return "say which frames: --frames 0,30 or --times 0,0.5";
@@ -432,6 +444,51 @@ int renderGoldens(const Options& o) {
   return 0;
 }
 
+// The reference replays (render/replay.h): every scene of the golden manifest, run with the
+// solution from frame 0 to its last image's frame (at least 60), about 60 frames of it packed
+// into <dir>/<scene>.json. The grader plays a student's run beside them in its report.
+int writeReplays(const Options& o) {
+  if (std::string(A6_RENDER_STUDENT_SET) != "solution") {
+    std::fprintf(stderr,
+                 "a6_render --replays: reference replays come from the solution only: run "
+                 "a6_render_solution --replays\n");
+    return 2;
+  }
+  const std::string manifestPath = (std::filesystem::path(o.goldenDir) / "manifest.json").string();
+  const golden::ManifestResult read = golden::readManifest(manifestPath);
+  if (!read) {
+    std::fprintf(stderr, "a6_render: %s\n", read.error.c_str());
+    return 1;
+  }
+  std::map<std::string, int> last;
+  for (const golden::GoldenImage& image : read.manifest.images)
+    last[image.scene] = std::max({last[image.scene], image.frame, 60});
+  const std::filesystem::path dir =
+      o.outGiven ? std::filesystem::path(o.out) : std::filesystem::path(o.goldenDir) / "replays";
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  for (const auto& [scene, frame] : last) {
+    harness::SceneRequest request;
+    request.scene = scene;
+    request.frames = replay::replayFrames(frame);
+    request.lean = true;
+    const harness::SceneResult result = harness::makeInProcess()->runScene(request);
+    if (!result.ok()) {
+      std::fprintf(stderr, "a6_render: %s: %s\n", scene.c_str(), result.error.c_str());
+      return 1;
+    }
+    const SceneParams params = defaultParams(scene);
+    const replay::Recording recording{scene, params.dt, Vec2(0, -params.gravity), request.frames,
+                                      result.snapshots};
+    const std::string text = replay::pack(recording).dump() + "\n";
+    const std::filesystem::path file = dir / (scene + ".json");
+    std::ofstream(file, std::ios::binary) << text;
+    std::printf("  %s  (%zu frames to frame %d, %zu bytes)\n", file.c_str(), request.frames.size(),
+                frame, text.size());
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -451,5 +508,6 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (options.replays) return writeReplays(options);
   return options.goldens ? renderGoldens(options) : renderScenes(options);
 }

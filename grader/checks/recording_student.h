@@ -1,0 +1,40 @@
+// The student's code as the suite sees it, with a memory: every request is passed on to the
+// budgeted probe (checks/budgeted_student.h), and those of the public physics checks are kept
+// with their answers in a Transcript, for the mistakes stage. Takes the student's code to pass
+// requests to; gives its answers unchanged, and the transcript.
+#pragma once
+
+#include "checks/transcript.h"
+#include "harness/student_code.h"
+
+namespace a6::grader {
+
+class RecordingStudent final : public harness::StudentCode {
+ public:
+  explicit RecordingStudent(harness::StudentCode& inner) : inner_(inner) {}
+
+  /// What the public checks asked and got so far.
+  const Transcript& transcript() const { return transcript_; }
+  Transcript takeTranscript() { return std::move(transcript_); }
+
+  harness::SpringForceResult springForce(const harness::SpringForceRequest& r) override;
+  harness::ForcesResult forces(const harness::ForcesRequest& r) override;
+  harness::SimulateResult simulate(const harness::SimulateRequest& r) override;
+  harness::ClothResult buildCloth(const ClothSpec& s) override;
+  harness::ParticlesResult emit(const harness::EmitRequest& r) override;
+  harness::ParticlesResult runParticles(const harness::ParticleRunRequest& r) override;
+  harness::Box2DResult runBox2D(const harness::Box2DRequest& r) override;
+  harness::SceneResult runScene(const harness::SceneRequest& r) override {
+    return inner_.runScene(r);
+  }
+
+ private:
+  harness::StudentCode& inner_;
+  Transcript transcript_;
+};
+
+/// The running check's name when it is a public physics check (Task<N><Suite>.<Name>, not a
+/// Task<N>Hidden one), else "".
+std::string publicCheckRunning();
+
+}  // namespace a6::grader

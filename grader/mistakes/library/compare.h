@@ -1,0 +1,66 @@
+// How a model's answers are set beside the student's: closeness of numbers (NaN is like NaN),
+// and one Likeness per request from the reference's, the mistake's and the student's answers.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "mistakes/mistakes.h"
+
+namespace a6::grader::mistakes {
+
+/// Relative closeness: far looser than any summation order or float intermediates make (about
+/// 1e-7), far tighter than any mistake of the library changes an answer.
+constexpr double kTolerance = 1e-5;
+
+/// a and b within kTolerance of `scale` (NaN is close only to NaN, infinity only to itself).
+inline bool near(double a, double b, double scale) {
+  if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
+  if (std::isinf(a) || std::isinf(b)) return a == b;
+  return std::abs(a - b) <= kTolerance * scale + 1e-12;
+}
+inline bool near(double a, double b) { return near(a, b, std::max(std::abs(a), std::abs(b))); }
+inline bool near(const Vec2& a, const Vec2& b, double scale) {
+  return near(a.x(), b.x(), scale) && near(a.y(), b.y(), scale);
+}
+inline bool near(const Vec2& a, const Vec2& b) {
+  const double scale = std::max(std::max(std::abs(a.x()), std::abs(a.y())),
+                                std::max(std::abs(b.x()), std::abs(b.y())));
+  return near(a, b, scale);
+}
+
+/// The likeness of one answer: the mistake's and the reference's answers decide whether the
+/// request tells anything, then the student's is set beside each.
+template <class Result, class Same>
+Likeness likeness(const Result& student, const Result& reference, const Result& mistaken,
+                  Same same) {
+  if (same(reference, mistaken)) return Likeness::Uninformative;
+  if (same(student, mistaken)) return Likeness::Mistake;
+  if (same(student, reference)) return Likeness::Reference;
+  return Likeness::Neither;
+}
+
+/// One likeness per exchange that both answers can be given for. `reference` and `mistaken`
+/// map a request to std::optional<Result> (empty: the model cannot answer that request).
+template <class Exchanges, class Reference, class Mistaken, class Same>
+std::vector<Likeness> judgeEach(const Exchanges& exchanges, Reference reference, Mistaken mistaken,
+                                Same same) {
+  std::vector<Likeness> out;
+  for (const auto& x : exchanges) {
+    const auto r = reference(x.request), m = mistaken(x.request);
+    if (r && m) out.push_back(likeness(x.result, *r, *m, same));
+  }
+  return out;
+}
+
+/// A likeness from what the student's answer shows directly (for mistakes recognised by a
+/// property of the answer: a joint's limit left off, a pointer left set).
+inline Likeness shows(bool likeMistake, bool likeReference) {
+  if (likeMistake && !likeReference) return Likeness::Mistake;
+  if (likeReference && !likeMistake) return Likeness::Reference;
+  return Likeness::Neither;
+}
+
+}  // namespace a6::grader::mistakes

@@ -1,0 +1,142 @@
+// Task 5, the particle system. The update of particles already alive (no emission: rate 0) is
+// deterministic: the reference (forces with the reference model, symplectic Euler, cooling
+// towards the air, ageing, removal at age >= lifetime) and the mistakes of tests/wrong/t5_* that
+// change it answer ParticleRunRequest as those wrong versions do. The emitter's mistakes draw
+// at random: they are recognised by what the emitted sample shows (every velocity the same; a
+// disc crowded at its centre), beside what the reference's sample shows.
+#include <algorithm>
+#include <optional>
+
+#include "mistakes/library/compare.h"
+#include "mistakes/library/models.h"
+
+namespace a6::grader::mistakes {
+namespace {
+
+#include "reference_models.inc"
+
+using harness::ParticleRunRequest;
+using harness::ParticlesResult;
+
+enum class Flaw { None, PositionFirst, CoolingWrongSign, NoRemoval, RemovalLate };
+
+void update(std::vector<Particle>& particles, const ParticleRunRequest& r, Flaw flaw) {
+  const double dt = r.dt, cooling = flaw == Flaw::CoolingWrongSign ? -r.coolingRate : r.coolingRate;
+  for (Particle& p : particles) {
+    p.f = referenceExternalForce(p, r.env);
+    if (flaw == Flaw::PositionFirst) p.x += p.v * dt;
+    p.v += p.f / p.m * dt;
+    if (flaw != Flaw::PositionFirst) p.x += p.v * dt;
+    p.temperature -= cooling * (p.temperature - r.env.airTemperature) * dt;
+    p.age += dt;
+  }
+  if (flaw == Flaw::NoRemoval) return;
+  const auto dead = [flaw](const Particle& p) {
+    return flaw == Flaw::RemovalLate ? p.age > p.lifetime : p.age >= p.lifetime;
+  };
+  particles.erase(std::remove_if(particles.begin(), particles.end(), dead), particles.end());
+}
+
+std::optional<ParticlesResult> run(const ParticleRunRequest& r, Flaw flaw) {
+  if (!r.referenceForces || r.emitter.rate != 0 || r.steps > 100000) return std::nullopt;
+  ParticlesResult out;
+  out.particles = r.initial;
+  for (int k = 0; k < r.steps; ++k) {
+    update(out.particles, r, flaw);
+    out.counts.push_back(static_cast<int>(out.particles.size()));
+  }
+  return out;
+}
+
+// The counts after every step, and the particles alive at the end in the same order (removal
+// keeps the order of the others).
+bool same(const ParticlesResult& a, const ParticlesResult& b) {
+  if (a.counts != b.counts || a.particles.size() != b.particles.size()) return false;
+  for (std::size_t k = 0; k < a.particles.size(); ++k) {
+    const Particle &p = a.particles[k], &q = b.particles[k];
+    const double scale = std::max({1.0, q.x.norm(), q.v.norm()});
+    if (!near(p.x, q.x, scale) || !near(p.v, q.v, scale) || !near(p.temperature, q.temperature) ||
+        !near(p.age, q.age))
+      return false;
+  }
+  return true;
+}
+
+MistakeModel updateModel(const char* id, Flaw flaw, const char* text) {
+  auto judge = [flaw](const Transcript& t) {
+    return judgeEach(
+        t.particleRuns, [](const ParticleRunRequest& r) { return run(r, Flaw::None); },
+        [flaw](const ParticleRunRequest& r) { return run(r, flaw); }, same);
+  };
+  return MistakeModel{id, 5, text, judge};
+}
+
+// Emitted samples large enough to tell (the checks emit thousands).
+constexpr std::size_t kSample = 200;
+
+// Every emitted velocity exactly spec.velocity, where the spread asks for a uniform offset.
+MistakeModel spreadModel() {
+  auto judge = [](const Transcript& t) {
+    std::vector<Likeness> out;
+    for (const auto& x : t.emissions) {
+      const EmitterSpec& spec = x.request.spec;
+      if (spec.velocitySpread <= 0 || x.result.particles.size() < kSample) continue;
+      const bool allMean = std::all_of(x.result.particles.begin(), x.result.particles.end(),
+                                       [&](const Particle& p) { return p.v == spec.velocity; });
+      out.push_back(shows(allMean, !allMean));
+    }
+    return out;
+  };
+  return MistakeModel{"t5_emitter_ignores_spread", 5,
+                      "Your emitter behaves exactly like one that gives every particle exactly "
+                      "spec.velocity: add a uniform offset in [-spread, spread] to each component, "
+                      "drawn from rng.",
+                      judge};
+}
+
+// The share of the sample within half the radius: a quarter when uniform over the disc's area,
+// a half when the radius itself is drawn uniformly (about 0.035 either way at 200 particles).
+MistakeModel discModel() {
+  auto judge = [](const Transcript& t) {
+    std::vector<Likeness> out;
+    for (const auto& x : t.emissions) {
+      const EmitterSpec& spec = x.request.spec;
+      const auto& ps = x.result.particles;
+      if (spec.radius <= 0 || ps.size() < kSample) continue;
+      const auto inner = std::count_if(ps.begin(), ps.end(), [&](const Particle& p) {
+        return (p.x - spec.position).norm() < spec.radius / 2;
+      });
+      const double share = static_cast<double>(inner) / static_cast<double>(ps.size());
+      out.push_back(shows(share > 0.42, share < 0.33));
+    }
+    return out;
+  };
+  return MistakeModel{"t5_uniform_radius_in_disc", 5,
+                      "Your emitter behaves exactly like one that draws the radius uniformly in "
+                      "[0, r]: that crowds the particles at the disc's centre; uniform over the "
+                      "area needs r sqrt(u), which rng.inDisc(r) gives.",
+                      judge};
+}
+
+}  // namespace
+
+std::vector<MistakeModel> task5Mistakes() {
+  return {
+      updateModel("t5_position_before_velocity", Flaw::PositionFirst,
+                  "Your update behaves exactly like explicit Euler: the position moves before "
+                  "the velocity is updated; update v first, then x with the new velocity."),
+      updateModel("t5_cooling_wrong_sign", Flaw::CoolingWrongSign,
+                  "Your update behaves exactly like one whose cooling has the wrong sign: "
+                  "particles move away from the air's temperature; T -= k_c (T - T_air) dt."),
+      updateModel("t5_no_removal", Flaw::NoRemoval,
+                  "Your update behaves exactly like one that ages particles but never removes "
+                  "them: erase every particle whose age has reached its lifetime."),
+      updateModel("t5_removal_off_by_one", Flaw::RemovalLate,
+                  "Your update behaves exactly like one that removes a particle only when age > "
+                  "lifetime, one step late: remove it once age >= lifetime."),
+      spreadModel(),
+      discModel(),
+  };
+}
+
+}  // namespace a6::grader::mistakes

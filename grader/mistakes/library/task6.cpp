@@ -1,0 +1,172 @@
+// Task 6, Box2D joints. Box2D runs in the probe only, so these mistakes are recognised by what
+// the student's joints show in the answer, beside what the scene asks of them (its parameters,
+// scenes/box2d_scenes.h, and the bodies' masses the answer lists): a limit left off, a motor
+// turned the wrong way, a spring of the wrong frequency, a joint left in the world.
+#include <cmath>
+
+#include "mistakes/library/compare.h"
+#include "mistakes/library/models.h"
+#include "scenes/box2d_scenes.h"
+
+namespace a6::grader::mistakes {
+namespace {
+
+using harness::Box2DResult;
+using harness::DragEvent;
+using harness::JointInfo;
+namespace p = box2d_params;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kFloat = 1e-3;  // Box2D keeps its joints in float: relative closeness
+
+bool close(double a, double b) { return std::abs(a - b) <= kFloat * std::max(1.0, std::abs(b)); }
+
+using JointLikeness = std::function<Likeness(const Box2DResult&, const JointInfo&)>;
+
+// One likeness per joint of `type` built in `scene` (or, for "mouse", per drag joint).
+MistakeModel jointModel(const char* id, const char* scene, const char* type, JointLikeness judge,
+                        const char* text) {
+  std::string sceneName = scene, typeName = type;
+  auto all = [sceneName, typeName, judge](const Transcript& t) {
+    std::vector<Likeness> out;
+    for (const auto& x : t.box2d) {
+      if (x.request.scene != sceneName) continue;
+      const auto& joints = typeName == "mouse" ? x.result.dragJoints : x.result.builtJoints;
+      for (const JointInfo& j : joints) {
+        if (j.type == typeName) out.push_back(judge(x.result, j));
+      }
+    }
+    return out;
+  };
+  return MistakeModel{id, 6, text, all};
+}
+
+double massOf(const Box2DResult& r, int body) {
+  return body >= 0 && body < static_cast<int>(r.bodies.size())
+             ? r.bodies[static_cast<std::size_t>(body)].mass
+             : 0;
+}
+
+// b2LinearStiffness: the stiffness of a spring of `hertz` between the joint's two bodies.
+double stiffnessOf(const Box2DResult& r, const JointInfo& j, double hertz) {
+  const double a = massOf(r, j.bodyA), b = massOf(r, j.bodyB);
+  const double mass = a > 0 && b > 0 ? a * b / (a + b) : a > 0 ? a : b;
+  const double omega = 2 * kPi * hertz;
+  return mass * omega * omega;
+}
+
+Likeness hingeAtCentre(const Box2DResult&, const JointInfo& j) {
+  const Vec2 pivot(p::kPivot.x, p::kPivot.y);
+  return shows(j.localAnchorB.norm() < 1e-4, (j.anchorA - pivot).norm() < 1e-3);
+}
+Likeness pistonLimits(const Box2DResult&, const JointInfo& j) {
+  return shows(!j.enableLimit,
+               j.enableLimit && close(j.lower, p::kPistonLower) && close(j.upper, p::kPistonUpper));
+}
+Likeness ropeRigid(const Box2DResult&, const JointInfo& j) {
+  return shows(std::abs(j.maxLength - j.minLength) < 1e-4,
+               j.minLength < 1e-4 && close(j.maxLength, p::kRopeMaxLength));
+}
+Likeness motorSign(const Box2DResult&, const JointInfo& j) {
+  return shows(close(j.motorSpeed, -p::kCarMotorSpeed), close(j.motorSpeed, p::kCarMotorSpeed));
+}
+Likeness wheelSpring(const Box2DResult& r, const JointInfo& j) {
+  return shows(j.stiffness == 0 && j.damping == 0,
+               close(j.stiffness, stiffnessOf(r, j, p::kWheelHertz)));
+}
+Likeness mouseMaxForce(const Box2DResult& r, const JointInfo& j) {
+  const double mass = massOf(r, j.bodyB);
+  if (close(mass, 1)) return Likeness::Uninformative;
+  return shows(close(j.maxForce, 1000), close(j.maxForce, 1000 * mass));
+}
+Likeness mouseFrequency(const Box2DResult& r, const JointInfo& j) {
+  const double expected = stiffnessOf(r, j, 5);
+  return shows(j.stiffness > 0 && !close(j.stiffness, expected), close(j.stiffness, expected));
+}
+
+// Drags whose end the answer shows: the world's joint count at the step an end came, against
+// the step before (one fewer), and the caller's pointer after each endDrag (null).
+std::vector<Likeness> jointsDestroyed(const Transcript& t) {
+  std::vector<Likeness> out;
+  for (const auto& x : t.box2d) {
+    const std::vector<int>& counts = x.result.jointCounts;
+    for (const DragEvent& e : x.request.drag) {
+      const auto s = static_cast<std::size_t>(e.step);
+      if (e.kind != DragEvent::Kind::End || e.step < 1 || s >= counts.size()) continue;
+      out.push_back(shows(counts[s] == counts[s - 1], counts[s] == counts[s - 1] - 1));
+    }
+  }
+  return out;
+}
+std::vector<Likeness> pointersCleared(const Transcript& t) {
+  std::vector<Likeness> out;
+  for (const auto& x : t.box2d) {
+    for (const int cleared : x.result.endDragCleared)
+      out.push_back(shows(cleared == 0, cleared == 1));
+  }
+  return out;
+}
+// A drag begun on a sleeping body: awake after that step.
+std::vector<Likeness> bodiesWoken(const Transcript& t) {
+  std::vector<Likeness> out;
+  for (const auto& x : t.box2d) {
+    std::size_t drag = 0;
+    for (const DragEvent& e : x.request.drag) {
+      if (e.kind != DragEvent::Kind::Begin || drag >= x.result.dragJoints.size()) continue;
+      const int body = x.result.dragJoints[drag++].bodyB;
+      const auto s = static_cast<std::size_t>(e.step);
+      const auto& poses = x.result.poses;
+      if (e.step < 1 || s >= poses.size() || body < 0) continue;
+      const auto b = static_cast<std::size_t>(body);
+      if (b >= poses[s].size() || b >= poses[s - 1].size() || poses[s - 1][b].awake) continue;
+      out.push_back(shows(!poses[s][b].awake, poses[s][b].awake));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<MistakeModel> task6Mistakes() {
+  return {
+      jointModel("t6_hinge_anchor_at_body_center", "pendulum", "revolute", hingeAtCentre,
+                 "Your hinge behaves exactly like one anchored at body b's centre, "
+                 "b->GetPosition(), instead of the world anchor passed in: the pendulum's bob is "
+                 "pinned through itself; Initialize(a, b, worldAnchor)."),
+      jointModel("t6_piston_no_limits", "piston", "prismatic", pistonLimits,
+                 "Your piston behaves exactly like one whose limits are set but never enabled: "
+                 "set enableLimit = true, or the motor drives it on forever."),
+      jointModel("t6_rope_rigid", "rope", "distance", ropeRigid,
+                 "Your rope behaves exactly like a rigid rod: Initialize sets minLength = "
+                 "maxLength = the current distance; a rope needs minLength = 0 and maxLength = "
+                 "its full length."),
+      jointModel("t6_wheel_motor_wrong_sign", "car", "wheel", motorSign,
+                 "Your wheel motor behaves exactly like one whose speed is negated: the car "
+                 "drives backwards; pass motorSpeed on as given (negative is clockwise)."),
+      jointModel("t6_wheel_no_spring", "car", "wheel", wheelSpring,
+                 "Your wheel joint behaves exactly like one with no suspension spring (stiffness "
+                 "and damping 0): call b2LinearStiffness(def.stiffness, def.damping, hertz, "
+                 "dampingRatio, chassis, wheel)."),
+      jointModel("t6_mouse_maxforce_without_mass", "mouse_drag", "mouse", mouseMaxForce,
+                 "Your mouse joint behaves exactly like one whose maxForce is 1000 N whatever the "
+                 "body: the testbed uses 1000 times the body's mass."),
+      jointModel("t6_mouse_spring_wrong_frequency", "mouse_drag", "mouse", mouseFrequency,
+                 "Your mouse joint's spring is not the testbed's 5 Hz: b2LinearStiffness(def."
+                 "stiffness, def.damping, 5.0f, 0.7f, ground, body)."),
+      MistakeModel{"t6_mouse_joint_not_destroyed", 6,
+                   "Your endDrag behaves exactly like one that forgets the joint instead of "
+                   "destroying it: the world keeps holding the body; call "
+                   "world.DestroyJoint(joint).",
+                   jointsDestroyed},
+      MistakeModel{"t6_end_drag_keeps_pointer", 6,
+                   "Your endDrag behaves exactly like one that destroys the joint but leaves the "
+                   "caller's pointer on it: set joint = nullptr after world.DestroyJoint(joint).",
+                   pointersCleared},
+      MistakeModel{"t6_begin_drag_leaves_body_asleep", 6,
+                   "Your beginDrag behaves exactly like one that does not wake the body: a "
+                   "sleeping body ignores the drag; call body->SetAwake(true).",
+                   bodiesWoken},
+  };
+}
+
+}  // namespace a6::grader::mistakes

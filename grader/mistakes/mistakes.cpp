@@ -1,0 +1,44 @@
+#include "mistakes/mistakes.h"
+
+#include <map>
+
+namespace a6::grader {
+namespace {
+
+struct Tally {
+  int mistake = 0, reference = 0, neither = 0;
+  /// Like the mistake somewhere, never like the reference where they differ, and like the
+  /// mistake at least as often as like neither.
+  bool names() const { return mistake > 0 && reference == 0 && mistake >= neither; }
+};
+
+Tally tally(const std::vector<Likeness>& verdicts) {
+  Tally t;
+  for (const Likeness v : verdicts) {
+    if (v == Likeness::Mistake) ++t.mistake;
+    if (v == Likeness::Reference) ++t.reference;
+    if (v == Likeness::Neither) ++t.neither;
+  }
+  return t;
+}
+
+}  // namespace
+
+std::vector<NamedMistake> nameMistakes(const Transcript& transcript,
+                                       const std::vector<MistakeModel>& library,
+                                       const std::set<int>& failingTasks) {
+  std::map<int, NamedMistake> best;  // per task: the model with the most evidence
+  for (const MistakeModel& model : library) {
+    if (failingTasks.count(model.task) == 0 || !model.judge) continue;
+    const Tally t = tally(model.judge(transcript));
+    if (!t.names()) continue;
+    const auto found = best.find(model.task);
+    if (found != best.end() && found->second.evidence >= t.mistake) continue;
+    best[model.task] = NamedMistake{model.id, model.task, model.text, t.mistake};
+  }
+  std::vector<NamedMistake> named;
+  for (auto& [task, mistake] : best) named.push_back(std::move(mistake));
+  return named;
+}
+
+}  // namespace a6::grader

@@ -1,0 +1,46 @@
+// The mistakes stage: the student's answers to the public checks (checks/transcript.h) beside
+// a library of known mistakes, each a model of what a common wrong version answers on the same
+// inputs (grader/mistakes/library/, written from tests/wrong/; graders' material only: a student
+// release has no library, and then names nothing).
+//
+// Takes the transcript and the tasks whose physics checks failed; gives at most one mistake per
+// such task. A mistake is named only when the student's answers are like it wherever it differs
+// from the reference, never like the reference there, and like it at least as often as like
+// neither: so a correct solution, however written, is never told it made one.
+#pragma once
+
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "checks/transcript.h"
+#include "mistakes/named.h"
+
+namespace a6::grader {
+
+/// How a student's answer to one request compares with a mistake and with the reference.
+enum class Likeness {
+  Uninformative,  ///< the mistake answers as the reference does here: this request tells nothing
+  Mistake,        ///< the student answers as the mistake does (and the reference does not)
+  Reference,      ///< the student answers as the reference does (and the mistake does not)
+  Neither,        ///< the student answers as neither does
+};
+
+struct MistakeModel {
+  std::string id;  ///< the name of its wrong version under tests/wrong/
+  int task = 0;
+  std::string text;  ///< NamedMistake::text
+  /// One likeness per request of the transcript that the model can answer.
+  std::function<std::vector<Likeness>(const Transcript&)> judge;
+};
+
+/// The library of known mistakes (empty where the library is not built: a student release).
+const std::vector<MistakeModel>& mistakeLibrary();
+
+/// The mistake each failing task's answers match best, if any, in task order.
+std::vector<NamedMistake> nameMistakes(const Transcript& transcript,
+                                       const std::vector<MistakeModel>& library,
+                                       const std::set<int>& failingTasks);
+
+}  // namespace a6::grader

@@ -1,0 +1,15 @@
+// A known mistake that a student's answers matched: what the report and results.json say.
+#pragma once
+
+#include <string>
+
+namespace a6::grader {
+
+struct NamedMistake {
+  std::string id;    ///< the wrong version it was written from: "t1_damping_full_relative_velocity"
+  int task = 0;      ///< 1..6
+  std::string text;  ///< one sentence for the student: what the code does, and the fix
+  int evidence = 0;  ///< how many of the public checks' requests it matched where it differs
+};
+
+}  // namespace a6::grader

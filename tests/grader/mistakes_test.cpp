@@ -1,0 +1,116 @@
+// The mistakes stage (grader/mistakes/): the rule that names a mistake, and the library against
+// the wrong versions it is written from. End to end (a6_grade names each wrong version's
+// mistake, and none for the solution, the alternatives and another seed): scores_test.cpp.
+#include "mistakes/mistakes.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+using a6::Vec2;
+using a6::grader::Exchange;
+using a6::grader::Likeness;
+using a6::grader::mistakeLibrary;
+using a6::grader::MistakeModel;
+using a6::grader::nameMistakes;
+using a6::grader::Transcript;
+using a6::harness::SpringForceRequest;
+using a6::harness::SpringForceResult;
+
+const fs::path kWrong = fs::path(A6_SOURCE_DIR) / "tests" / "wrong";
+
+std::string expectOf(const std::string& id) {
+  std::ifstream in(kWrong / id / "EXPECT");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A spring stretched to 1.5 m (rest 1 m, ks 10 N/m), its ends moving apart sideways and along it.
+Exchange<SpringForceRequest, SpringForceResult> stretched(Vec2 answer) {
+  SpringForceRequest r;
+  r.p1.x = Vec2(0, 0), r.p2.x = Vec2(1.5, 0);
+  r.p1.v = Vec2(0.5, 0.25), r.p2.v = Vec2(1, -0.5);
+  r.restLength = 1, r.ks = 10, r.kd = 2;
+  SpringForceResult result;
+  result.force = answer;
+  return {"Task1Spring.Stretched", r, result};
+}
+
+std::set<std::string> named(const Transcript& t, std::set<int> failing) {
+  std::set<std::string> ids;
+  for (const auto& m : nameMistakes(t, mistakeLibrary(), failing)) ids.insert(m.id);
+  return ids;
+}
+
+TEST(MistakeLibrary, EveryModelIsAWrongVersionOfItsTask) {
+  ASSERT_FALSE(mistakeLibrary().empty());
+  std::set<std::string> ids;
+  for (const MistakeModel& m : mistakeLibrary()) {
+    EXPECT_TRUE(ids.insert(m.id).second) << m.id << " is in the library twice";
+    const std::string expect = expectOf(m.id);
+    EXPECT_NE(expect.find("fail: " + std::to_string(m.task)), std::string::npos)
+        << "tests/wrong/" << m.id << "/EXPECT must say 'fail: " << m.task << "'";
+    EXPECT_NE(expect.find("mistake: " + m.id), std::string::npos)
+        << "tests/wrong/" << m.id << "/EXPECT must say 'mistake: " << m.id << "'";
+    EXPECT_EQ(m.text.rfind("Your ", 0), 0u) << m.id << ": the sentence speaks to the student";
+    EXPECT_LT(m.text.size(), 320u) << m.id << ": one sentence";
+  }
+}
+
+TEST(MistakeLibrary, EveryWrongVersionThatNamesAMistakeHasItsModel) {
+  std::set<std::string> ids;
+  for (const MistakeModel& m : mistakeLibrary()) ids.insert(m.id);
+  for (const auto& dir : fs::directory_iterator(kWrong)) {
+    const std::string expect = expectOf(dir.path().filename().string());
+    const auto at = expect.find("mistake: ");
+    if (at == std::string::npos) continue;
+    std::istringstream id(expect.substr(at + 9));
+    std::string word;
+    id >> word;
+    EXPECT_TRUE(ids.count(word)) << dir.path() << " names " << word << ", which has no model";
+  }
+}
+
+TEST(NameMistakes, TheWrongSignIsNamed) {
+  // f2 = -ks (l - l0) e - kd ((v2 - v1)·e) e = -5 - 2 (0.5) = -6 along x; the wrong sign: +5 - 1.
+  Transcript t;
+  t.springs.push_back(stretched(Vec2(4, 0)));
+  EXPECT_EQ(named(t, {1}), std::set<std::string>{"t1_wrong_sign"});
+  EXPECT_EQ(named(t, {2, 3}), std::set<std::string>{}) << "only a failing task's mistakes";
+}
+
+TEST(NameMistakes, TheReferenceIsNeverNamed) {
+  Transcript t;
+  t.springs.push_back(stretched(Vec2(-6, 0)));
+  EXPECT_EQ(named(t, {1, 2, 3, 4, 5, 6}), std::set<std::string>{});
+  // Within float rounding of the reference: still nothing.
+  t.springs.push_back(stretched(Vec2(-6 * (1 + 1e-7), 1e-9)));
+  EXPECT_EQ(named(t, {1}), std::set<std::string>{});
+}
+
+TEST(NameMistakes, AnAnswerLikeTheReferenceSomewhereVetoesTheMistake) {
+  // The full relative velocity damps the sideways motion too: (-6, 1.5). Once like it, once like
+  // the reference: not named.
+  Transcript t;
+  t.springs.push_back(stretched(Vec2(-6, 1.5)));
+  EXPECT_EQ(named(t, {1}), std::set<std::string>{"t1_damping_full_relative_velocity"});
+  t.springs.push_back(stretched(Vec2(-6, 0)));
+  EXPECT_EQ(named(t, {1}), std::set<std::string>{});
+}
+
+TEST(NameMistakes, NaNIsLikeTheMissingGuard) {
+  Exchange<SpringForceRequest, SpringForceResult> x = stretched(Vec2(NAN, NAN));
+  x.request.p2.x = x.request.p1.x;
+  Transcript t;
+  t.springs.push_back(x);
+  EXPECT_EQ(named(t, {1}), std::set<std::string>{"t1_nan_for_coincident_particles"});
+}
+
+}  // namespace

@@ -1,0 +1,55 @@
+// The words of the checks' messages (suite.h, quantities.h): numbers for people, quantities named
+// in words with their units, never by the checks' own code.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "quantities.h"
+#include "suite.h"
+
+namespace a6::test {
+namespace {
+
+TEST(Numbers, SevenDigitsAtMostAndNoBinaryNoise) {
+  EXPECT_EQ(num(-5.199999999999999), "-5.2");
+  EXPECT_EQ(num(0.00035000000000000005), "0.00035");
+  EXPECT_EQ(num(9.5811388300841898e-05), "9.581139e-5");
+  EXPECT_EQ(num(1e30), "1e30");
+  EXPECT_EQ(num(-0.0), "0");
+  EXPECT_EQ(num(12.6), "12.6");
+  EXPECT_EQ(num(1.0 / 64), "0.015625");
+  EXPECT_EQ(num(NAN), "nan");
+  EXPECT_EQ(str(Vec2(-0.0, 2.5)), "(0, 2.5)");
+}
+
+TEST(Quantities, NamedInWordsWithTheirUnits) {
+  EXPECT_EQ(quantityOf("forceOf(r)").words, "the force on p2");
+  EXPECT_EQ(quantityOf("forceOf(r)").unit, "N");
+  EXPECT_EQ(quantityOf("result.particles[0].v").words, "particle 0's velocity");
+  EXPECT_EQ(quantityOf("result.particles[0].v").unit, "m/s");
+  EXPECT_EQ(quantityOf("s[1].x").words, "particle 1's position");
+  EXPECT_EQ(quantityOf("forcesOf(r).buoyancy").words, "the buoyancy force");
+  EXPECT_EQ(quantityOf("j.anchorB").unit, "m");
+  EXPECT_EQ(quantityOf("p.temperature").unit, "K");
+}
+
+TEST(Quantities, AnExpressionNotInTheTableIsNeverShown) {
+  const Quantity q = quantityOf("quadrant[q] / n");
+  EXPECT_EQ(q.words, "the value checked");
+  EXPECT_EQ(q.unit, "");
+}
+
+TEST(Messages, AFailureNamesTheQuantityWithItsUnitNotTheCode) {
+  const Vec2 actual(10, 0);
+  const ::testing::AssertionResult r =
+      vecNear("forceOf(r)", "e", "t", actual, Vec2(-10, 0), Tolerance{20, 1e-5, true});
+  ASSERT_FALSE(r);
+  const std::string text = r.message();
+  EXPECT_NE(text.find("the force on p2"), std::string::npos) << text;
+  EXPECT_NE(text.find("expected: (-10, 0) N"), std::string::npos) << text;
+  EXPECT_NE(text.find("actual:   (10, 0) N"), std::string::npos) << text;
+  EXPECT_EQ(text.find("forceOf"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace a6::test
