@@ -6,8 +6,9 @@
 #       after changing a scene, its constants, the renderer or the palette: rebuilds everything
 #       that depends on them (the renderer, the golden tests, a6_grade, the viewer), re-renders
 #       every reference image from the solution into tests/golden/ and tests/golden/hidden/ (or
-#       into DIR, leaving the committed ones alone), says which images changed and which scene
-#       descriptions ("shows" in the manifests) to re-read, and runs the golden tests.
+#       into DIR, leaving the committed ones alone), writes the reference replays the grader's
+#       report plays (tests/golden/replays/, or DIR/replays), says which images changed and which
+#       scene descriptions ("shows" in the manifests) to re-read, and runs the golden tests.
 #   scripts/instructor.sh hidden-check
 #       after adding or changing a TEST(Task<N>Hidden, ...) in tests/hidden/*_test.cpp: rebuilds
 #       a6_grade and the suite, names the new checks and the rubric item each counts for, and
@@ -129,6 +130,15 @@ job_rerender() {
   rerender_set tests/golden "${into:-tests/golden}" || status=1
   if [ -d tests/golden/hidden ]; then
     rerender_set tests/golden/hidden "${into:-tests/golden}/hidden" || status=1
+  fi
+  if ! "$build/framework/render/a6_render_solution" --replays \
+    --out "${into:-tests/golden}/replays" >"$build/instructor-replays.log" 2>&1; then
+    tail -5 "$build/instructor-replays.log"
+    echo "instructor: the reference replays could not be written"
+    status=1
+  else
+    echo "reference replays: $(grep -c '\.json' "$build/instructor-replays.log") scenes" \
+      "written to ${into:-tests/golden}/replays"
   fi
   [ -n "$into" ] || stale_descriptions
   if [ -n "$into" ]; then

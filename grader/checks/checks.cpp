@@ -231,9 +231,11 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
   if (probes != nullptr) {
     try {
       collectIncidents(*probes, student, run);
-      // After the incidents are counted: the replays are feedback, never a check's.
-      if (in.replays) run.replays = runReplays(student, a6::test::imagedScenes());
+      // After the incidents are counted: the replays are feedback, never a check's. A student
+      // release has no reference replays, and so no replays.
       run.replayFolder = a6::test::replayFolder();
+      if (in.replays && fs::is_directory(run.replayFolder))
+        run.replays = runReplays(student, a6::test::imagedScenes());
     } catch (...) {
     }
   }
