@@ -125,7 +125,7 @@ example_failure_message() {
 # Debian 13's, keeps a number as written; jq 1.6 shortens it).
 mask() {
   sed -E -e 's/\b([0-9]+)\.0\b/\1/g' -e 's/[0-9]+(\.[0-9]+)? s\b/N s/g' -e 's/"(execution_time|seconds|grader_peak_rss_mib)": [0-9.]+/"\1": N/g' \
-    -e 's/,[0-9]+(\.[0-9]+)?$/,N/' -e 's/\b([0-9]+m)?[0-9]+s\b|\b[0-9]+h[0-9]+m\b/N/g'
+    -e 's/,[0-9]+(\.[0-9]+)?$/,N/' -e 's/,([a-z ]+),[0-9]+(\.[0-9]+)?,([a-z0-9_ ]*)$/,\1,N,\3/' -e 's/\b([0-9]+m)?[0-9]+s\b|\b[0-9]+h[0-9]+m\b/N/g'
 }
 
 # Writes FILE with each marked block's body replaced by its example's text, to stdout.

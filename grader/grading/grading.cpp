@@ -347,17 +347,24 @@ void Grading::nameMistakes() {
   } catch (const std::exception& e) {
     report_.notes.push_back(std::string("naming the mistakes failed: ") + e.what());
   }
-  transcript_ = Transcript{};
 }
 
-// 5. The replays: each imaged scene's run beside the reference's, measured for the report.
+// 5. The replays: each imaged scene's run beside the reference's, and task 3's failed checks'
+// simulations beside the reference stepper's, measured for the report.
 void Grading::buildReplays() {
+  std::vector<std::string> failed;
+  for (const TestOutcome& t : report_.tests) {
+    if (!t.passed) failed.push_back(t.name);
+  }
   try {
     report_.replays = grader::buildReplays(sceneRuns_, replayFolder_);
+    for (ReplayView& v : trajectoryReplays(transcript_, failed))
+      report_.replays.push_back(std::move(v));
   } catch (const std::exception& e) {
     report_.notes.push_back(std::string("building the replays failed: ") + e.what());
   }
   sceneRuns_.clear();
+  transcript_ = Transcript{};
 }
 
 // 6. Score, 7. report.

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -37,6 +38,11 @@ struct MistakeModel {
 
 /// The library of known mistakes (empty where the library is not built: a student release).
 const std::vector<MistakeModel>& mistakeLibrary();
+
+/// The reference's answer to a simulation the checks of task 3 asked for (the reference
+/// stepper with the reference forces: the library's), for the report's replays; empty without
+/// the library, or for a request it cannot answer (the student's own forces).
+std::optional<harness::SimulateResult> referenceSimulation(const harness::SimulateRequest& r);
 
 /// The mistake each failing task's answers match best, if any, in task order.
 std::vector<NamedMistake> nameMistakes(const Transcript& transcript,

@@ -13,8 +13,9 @@
 namespace a6::grader {
 
 struct ReplayView {
-  std::string scene;
+  std::string scene;  ///< the scene, or for a trajectory the check it comes from
   int task = 0;
+  bool trajectory = false;         ///< a failed check's own simulation, not an imaged scene
   std::string student, reference;  ///< the packed runs (render/replay.h), JSON, for the player
   std::vector<int> frames;
   std::vector<double> times;                           ///< s, per frame

@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "mistakes/mistakes.h"
 #include "render/replay.h"
 
 namespace a6::grader {
@@ -73,30 +74,59 @@ double frameError(const replay::Unpacked& mine, const replay::Unpacked& ref, std
   return p.size() == q.size() ? rms(p, q) : NAN;
 }
 
-void measure(ReplayView& v, const SceneRun& run, const replay::Unpacked& mine,
-             const replay::Unpacked& ref) {
-  const std::vector<SpringData>& springs = run.result.snapshots.front().springs;
-  bool byCentroid = ref.drawn;
-  for (std::size_t f = 0; f < run.frames.size(); ++f) {
-    v.times.push_back(run.frames[f] * ref.frameDt);
-    v.error.push_back(frameError(mine, ref, f, byCentroid));
-    const replay::Energy e = replay::energyOf(run.result.snapshots[f], springs, ref.gravity);
-    if (e.known && ref.energy.size() == run.frames.size()) {
-      v.studentEnergy.push_back(e.total());
-      v.referenceEnergy.push_back(ref.energy[f].total());
-    }
+// A particle system's head count against the reference's, where it first differs by a fifth
+// (more particles also carry more energy: this says why first); "" when it never does.
+std::string population(const replay::Unpacked& mine, const replay::Unpacked& ref,
+                       const std::vector<double>& times) {
+  for (std::size_t f = 0; f < mine.particles.size() && f < ref.particles.size(); ++f) {
+    const double a = static_cast<double>(mine.particles[f].size());
+    const double b = static_cast<double>(ref.particles[f].size());
+    if (std::abs(a - b) < std::max(5.0, 0.2 * b)) continue;
+    const std::string counts = " (" + std::to_string(mine.particles[f].size()) + " against " +
+                               std::to_string(ref.particles[f].size()) + " at " +
+                               seconds(times[f]) + ")";
+    return a > b ? "Your run keeps more particles than the reference's" + counts +
+                       ": a particle whose age has reached its lifetime must be removed."
+                 : "Your run has fewer particles than the reference's" + counts +
+                       ": check the emission count per step (rate x dt, its fraction carried "
+                       "over) and that each particle lives its whole lifetime.";
   }
-  if (v.studentEnergy.size() != run.frames.size())
-    v.studentEnergy.clear(), v.referenceEnergy.clear();
+  return "";
+}
+
+// The error, the energies (when both runs have them), where they part, and the reading.
+void measure(ReplayView& v, const replay::Unpacked& mine, const replay::Unpacked& ref) {
+  const std::size_t frames = ref.frames.size();
+  const bool energies = mine.energy.size() == frames && ref.energy.size() == frames;
+  bool byCentroid = ref.drawn;
+  for (std::size_t f = 0; f < frames; ++f) {
+    v.times.push_back(ref.frames[f] * ref.frameDt);
+    v.error.push_back(frameError(mine, ref, f, byCentroid));
+    if (!energies) continue;
+    v.studentEnergy.push_back(mine.energy[f].total());
+    v.referenceEnergy.push_back(ref.energy[f].total());
+  }
+  const bool bodies = std::all_of(ref.particles.begin(), ref.particles.end(),
+                                  [](const std::vector<Vec2>& p) { return p.empty(); });
   v.errorMeasure = byCentroid ? "distance between the particles' centroids"
-                   : run.result.snapshots.front().particles.empty()
-                       ? "RMS distance of the bodies' corners"
-                       : "RMS distance of the particles";
+                   : bodies   ? "RMS distance of the bodies' corners"
+                              : "RMS distance of the particles";
   v.threshold = ref.view.height * (byCentroid ? 0.05 : 0.01);
   for (std::size_t f = 0; f < v.error.size() && v.parted < 0; ++f) {
     if (!(v.error[f] <= v.threshold)) v.parted = static_cast<int>(f);
   }
-  v.reading = readPlot(v.studentEnergy, v.referenceEnergy, v.error, v.parted, v.times);
+  v.reading = ref.drawn ? population(mine, ref, v.times) : "";
+  if (v.reading.empty())
+    v.reading = readPlot(v.studentEnergy, v.referenceEnergy, v.error, v.parted, v.times);
+}
+
+// Sets the two packed runs side by side in `v`.
+void compareRuns(ReplayView& v, const Json& mine, const Json& ref) {
+  v.student = mine.dump(-1, ' ', false, Json::error_handler_t::replace);
+  v.reference = ref.dump(-1, ' ', false, Json::error_handler_t::replace);
+  const replay::Unpacked theirs = replay::unpack(ref);
+  v.frames = theirs.frames;
+  measure(v, replay::unpack(mine), theirs);
 }
 
 ReplayView viewOf(const SceneRun& run, const std::filesystem::path& referenceDir) {
@@ -118,12 +148,83 @@ ReplayView viewOf(const SceneRun& run, const std::filesystem::path& referenceDir
         "instructor writes them again with a6_render_solution --replays)";
     return v;
   }
-  v.reference = packed.dump();
-  const Json mine =
-      replay::pack({run.scene, ref->frameDt, ref->gravity, run.frames, run.result.snapshots});
-  v.student = mine.dump(-1, ' ', false, Json::error_handler_t::replace);
-  measure(v, run, replay::unpack(mine), *ref);
+  compareRuns(
+      v, replay::pack({run.scene, ref->frameDt, ref->gravity, run.frames, run.result.snapshots}),
+      packed);
   return v;
+}
+
+// Task 3's trajectories ----------------------------------------------------------------------
+
+constexpr std::size_t kTrajectories = 4;       // replayed failed checks at most
+constexpr std::size_t kTrajectoryFrames = 61;  // frames of one, at most
+constexpr std::size_t kTrajectoryParticles = 2000;
+
+// A view that holds every finite position of the reference's run, with a margin.
+View viewAround(const harness::SimulateRequest& r, const harness::SimulateResult& ref) {
+  Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+  auto take = [&](const std::vector<Particle>& ps) {
+    for (const Particle& p : ps) {
+      if (std::isfinite(p.x.x()) && std::isfinite(p.x.y()))
+        lo = lo.cwiseMin(p.x), hi = hi.cwiseMax(p.x);
+    }
+  };
+  take(r.particles);
+  for (const auto& state : ref.states) take(state);
+  View view;
+  if (!(lo.x() <= hi.x())) return view;
+  view.center = (lo + hi) / 2;
+  view.height = 1.25 * std::max((hi - lo).maxCoeff(), 0.05);
+  return view;
+}
+
+// The request's initial state, then about kTrajectoryFrames of the recorded ones, as a run.
+replay::Recording trajectory(const harness::SimulateRequest& r, const harness::SimulateResult& run,
+                             const View& view) {
+  replay::Recording rec;
+  rec.scene = "trajectory";
+  rec.frameDt = r.frameDt;
+  rec.gravity = r.env.gravity;
+  auto frame = [&](int number, const std::vector<Particle>& particles) {
+    Snapshot s;
+    s.particles = particles;
+    s.view = view;
+    s.particleRadius = view.height / 150;
+    s.planes = r.env.planes;
+    s.circles = r.env.circles;
+    if (rec.frames.empty()) s.springs = r.springs;
+    rec.frames.push_back(number);
+    rec.snapshots.push_back(std::move(s));
+  };
+  frame(0, r.particles);
+  const std::size_t n = run.states.size(),
+                    every = (n + kTrajectoryFrames - 2) / (kTrajectoryFrames - 1);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k % std::max<std::size_t>(every, 1) == 0 || k + 1 == n)
+      frame(run.recordedFrames[k], run.states[k]);
+  }
+  return rec;
+}
+
+// The first exchange of `check` the reference can answer and the student's run differs from.
+std::optional<ReplayView> trajectoryOf(const Transcript& t, const std::string& check) {
+  for (const auto& x : t.simulations) {
+    if (x.check != check || x.request.particles.size() > kTrajectoryParticles) continue;
+    const std::optional<harness::SimulateResult> ref = referenceSimulation(x.request);
+    if (!ref || ref->states.size() != x.result.states.size() ||
+        ref->recordedFrames != x.result.recordedFrames || ref->states.empty())
+      continue;
+    const View view = viewAround(x.request, *ref);
+    ReplayView v;
+    v.scene = check;
+    v.task = 3;
+    v.trajectory = true;
+    compareRuns(v, replay::pack(trajectory(x.request, x.result, view)),
+                replay::pack(trajectory(x.request, *ref, view)));
+    const auto most = std::max_element(v.error.begin(), v.error.end());
+    if (most != v.error.end() && !(*most <= 1e-9 * view.height)) return v;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -143,12 +244,12 @@ std::string readPlot(const std::vector<double>& student, const std::vector<doubl
     const auto [lo, hi] = std::minmax_element(reference.begin(), reference.end());
     const double scale = std::max(*hi - *lo, 1e-9 + 1e-3 * std::abs(reference.front()));
     const double gain = (student.back() - student.front()) - (reference.back() - reference.front());
-    if (gain > 0.5 * scale) {
+    if (gain > 0.1 * scale) {
       return "Your energy grows where the reference's does not: the position is updated before "
              "the velocity (explicit Euler), a damping or drag term has the wrong sign, or a "
              "force pushes where it should pull.";
     }
-    if (gain < -0.5 * scale) {
+    if (gain < -0.1 * scale) {
       return "Your energy drains faster than the reference's: too much damping (on the full "
              "relative velocity v2 - v1 instead of its part along the spring), or a force that "
              "is too strong.";
@@ -162,6 +263,17 @@ std::string readPlot(const std::vector<double>& student, const std::vector<doubl
   return "The energy follows the reference's, but the positions part at " + from +
          ": forces of the right size in the wrong place, such as a spring between the wrong "
          "particles, a missing or doubled spring, or the wrong particles pinned.";
+}
+
+std::vector<ReplayView> trajectoryReplays(const Transcript& transcript,
+                                          const std::vector<std::string>& failedChecks) {
+  std::vector<ReplayView> views;
+  for (const std::string& check : failedChecks) {
+    if (views.size() >= kTrajectories || check.rfind("Task3", 0) != 0) continue;
+    if (std::optional<ReplayView> v = trajectoryOf(transcript, check))
+      views.push_back(std::move(*v));
+  }
+  return views;
 }
 
 std::vector<ReplayView> buildReplays(const std::vector<SceneRun>& runs,

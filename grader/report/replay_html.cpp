@@ -219,6 +219,10 @@ void replayBlock(std::ostringstream& out, const ReplayView& v) {
     out << "<p class=\"note\">No replay: " << htmlEscape(v.missing) << "</p></section>\n";
     return;
   }
+  if (v.trajectory) {
+    out << "<p>This check's own input, run by your stepper and by the reference's, both with the "
+           "reference forces.</p>\n";
+  }
   out << "<p class=\"reading\">" << htmlEscape(v.reading) << "</p>\n<div class=\"replay\">";
   player(out, v);
   plots(out, v);
@@ -239,7 +243,7 @@ std::string withUnit(double value, const std::string& unit) {
 std::string svgPlot(const std::string& title, const std::string& unit,
                     const std::vector<double>& times, const std::vector<Series>& series,
                     std::pair<double, double> range, double level, double mark) {
-  const double W = 460, H = 150, left = 64, right = 10, top = 22, bottom = 26;
+  const double W = 460, H = 160, left = 64, right = 10, top = 32, bottom = 26;
   const double lo = range.first, hi = range.second > range.first ? range.second : lo + 1;
   const double t0 = times.empty() ? 0 : times.front(), t1 = times.empty() ? 1 : times.back();
   auto X = [&](double t) { return left + (t - t0) / std::max(t1 - t0, 1e-9) * (W - left - right); };
@@ -264,7 +268,7 @@ std::string svgPlot(const std::string& title, const std::string& unit,
     svg << "<line x1=\"" << X(mark) << "\" x2=\"" << X(mark) << "\" y1=\"" << top << "\" y2=\""
         << H - bottom << "\" stroke=\"#b3261e\"/>";
   }
-  double legend = left + 8;
+  double legend = left;  // a line of its own, under the title
   for (const Series& s : series) {
     std::string path;
     bool pen = false;
@@ -281,8 +285,8 @@ std::string svgPlot(const std::string& title, const std::string& unit,
     }
     svg << "<path d=\"" << path << "\" fill=\"none\" stroke=\"" << s.color
         << "\" stroke-width=\"1.8\"" << (s.dashed ? " stroke-dasharray=\"5 3\"" : "") << "/>"
-        << "<text x=\"" << legend << "\" y=\"" << top + 12 << "\" font-size=\"10\" fill=\""
-        << s.color << "\">" << htmlEscape(s.name) << "</text>";
+        << "<text x=\"" << legend << "\" y=\"27\" font-size=\"10\" fill=\"" << s.color << "\">"
+        << htmlEscape(s.name) << "</text>";
     legend += 9 + 6.0 * static_cast<double>(s.name.size());
   }
   svg << "</svg>";
@@ -295,7 +299,14 @@ void htmlReplays(std::ostringstream& out, const std::vector<ReplayView>& replays
          "your code (orange) beside the reference (blue): play it, drag the time, step frame by "
          "frame, or overlay the two. The plots show the energy and how far your positions are "
          "from the reference's; the red line marks where they part.</p>\n";
-  for (const ReplayView& v : replays) replayBlock(out, v);
+  for (const ReplayView& v : replays) {
+    if (!v.trajectory) replayBlock(out, v);
+  }
+  if (std::any_of(replays.begin(), replays.end(), [](const ReplayView& v) { return v.trajectory; }))
+    out << "<h3>Task 3's failed checks, replayed</h3>\n";
+  for (const ReplayView& v : replays) {
+    if (v.trajectory) replayBlock(out, v);
+  }
   out << "<script>" << kPlayerScript << "</script>\n";
 }
 

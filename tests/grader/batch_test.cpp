@@ -125,9 +125,9 @@ std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
   return records;
 }
 
-const std::vector<std::string> kHeader = {"student", "email",        "sid",    "total",  "max",
-                                          "task1",   "task2",        "task3",  "task4",  "task5",
-                                          "task6",   "extra_credit", "status", "seconds"};
+const std::vector<std::string> kHeader = {
+    "student", "email", "sid",   "total",        "max",    "task1",   "task2",   "task3",
+    "task4",   "task5", "task6", "extra_credit", "status", "seconds", "mistakes"};
 
 Gradebook readGradebook(const fs::path& file) {
   Gradebook g;
@@ -362,6 +362,7 @@ TEST(BatchParts, TheGradebookIsValidCsv) {
   graded.tasks = {15, 15, 20, 3.5, 15, 20};
   graded.extraCredit = 0;
   graded.seconds = 2.25;
+  graded.mistakes = {"t1_wrong_sign", "t4_duplicate_springs"};
   batch::Submission t;
   t.key = "hung";
   t.people = {{"hung", "", ""}};
@@ -378,7 +379,23 @@ TEST(BatchParts, TheGradebookIsValidCsv) {
   EXPECT_EQ(records[1][12], "build failed");
   EXPECT_EQ(records[3][3], "") << "no points without a grade";
   EXPECT_EQ(records[3][12], "timed out");
+  EXPECT_EQ(records[1][14], "t1_wrong_sign t4_duplicate_springs");
+  EXPECT_EQ(records[3][14], "");
   for (const auto& r : records) EXPECT_EQ(r.size(), kHeader.size()) << csv;
+
+  // How many submissions made each known mistake, most often first.
+  batch::Outcome other;
+  other.mistakes = {"t4_duplicate_springs"};
+  const std::string counts = batch::mistakeCounts({&graded, &other, &timedOut});
+  EXPECT_LT(counts.find("t4_duplicate_springs"), counts.find("t1_wrong_sign")) << counts;
+  EXPECT_NE(counts.find("2 submissions"), std::string::npos) << counts;
+  EXPECT_NE(counts.find("1 submission\n"), std::string::npos) << counts;
+  EXPECT_EQ(batch::mistakeCounts({&timedOut}), "");
+  // Read from results.json's extra_data.mistakes.
+  const batch::Outcome read = batch::outcomeOfResults(
+      R"({"score": 5, "tests": [], "extra_data": {"errors": [], "build": {},
+          "mistakes": [{"task": 1, "mistake": "t1_wrong_sign", "evidence": 6}]}})");
+  EXPECT_EQ(read.mistakes, std::vector<std::string>{"t1_wrong_sign"});
 
   const std::string h = batch::histogram({0, 5, 9.99, 10, 103});
   EXPECT_NE(h.find("0-9 | ### 3"), std::string::npos) << h;
@@ -443,6 +460,7 @@ TEST(BatchParts, AMarkerHoldsTheOutcomeForItsFingerprintOnly) {
   o.tasks = {15, 15, 20, 15, 15, 20};
   o.extraCredit = 3;
   o.seconds = 1.5;
+  o.mistakes = {"t3_missing_pinning"};
   const std::string marker = batch::markerJson("0123456789abcdef", o);
   const auto back = batch::outcomeOfMarker(marker, "0123456789abcdef");
   ASSERT_TRUE(back);
@@ -450,6 +468,7 @@ TEST(BatchParts, AMarkerHoldsTheOutcomeForItsFingerprintOnly) {
   EXPECT_EQ(back->total, o.total);
   EXPECT_EQ(back->tasks, o.tasks);
   EXPECT_EQ(back->extraCredit, o.extraCredit);
+  EXPECT_EQ(back->mistakes, o.mistakes);
   EXPECT_FALSE(batch::outcomeOfMarker(marker, "fedcba9876543210"));
   EXPECT_FALSE(batch::outcomeOfMarker(marker.substr(0, marker.size() / 2), "0123456789abcdef"));
 }
@@ -618,6 +637,15 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
   EXPECT_DOUBLE_EQ(pointsOf(*solution, "max"), full);
   EXPECT_DOUBLE_EQ(pointsOf(*solution, "extra_credit"), fullExtra);
   EXPECT_GT(fullExtra, 0);
+  // The known mistakes named: each wrong version's own, in its row and in the summary's counts.
+  EXPECT_EQ(solution->at("mistakes"), "") << describe(*solution);
+  for (const std::string& name : wrong) {
+    const auto* row = g.row("wrong_" + name);
+    const std::string id = staging::expectedMistake(name);
+    if (row == nullptr || id.empty()) continue;
+    EXPECT_EQ(row->at("mistakes"), id) << describe(*row);
+    EXPECT_NE(r.output.find(id), std::string::npos) << "the summary counts " << id;
+  }
   for (int t = 1; t <= 6; ++t) {
     EXPECT_DOUBLE_EQ(pointsOf(*solution, "task" + std::to_string(t)), regular.at(t)) << t;
   }

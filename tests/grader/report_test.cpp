@@ -553,8 +553,8 @@ TEST(Replay, PlotsAreDrawnWithinTheirRangeAndMarkWhereTheyPart) {
   const std::vector<double> times = {0, 1, 2}, ys = {0, 1e30, NAN};
   const std::string svg =
       svgPlot("energy", "J", times, {{"yours", "#e8710a", false, &ys}}, {0, 10}, 5, 1);
-  // 0 J at the bottom edge (y 124), 1e30 J clamped to the top edge (y 22), NaN a gap.
-  EXPECT_NE(svg.find("M64.0 124.0 L257.0 22.0\""), std::string::npos) << svg;
+  // 0 J at the bottom edge (y 134), 1e30 J clamped to the top edge (y 32), NaN a gap.
+  EXPECT_NE(svg.find("M64.0 134.0 L257.0 32.0\""), std::string::npos) << svg;
   EXPECT_NE(svg.find("stroke=\"#b3261e\""), std::string::npos) << "the mark where they part";
   EXPECT_EQ(svg.find("nan"), std::string::npos) << svg;
   EXPECT_EQ(svg.find("e+30"), std::string::npos) << "off the chart: drawn on its edge";

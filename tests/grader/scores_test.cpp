@@ -143,6 +143,26 @@ void expectNoMistakeNamed(const Graded& g) {
   }
 }
 
+// The report's replays (grader/replay/): one per imaged scene, and a correct solution's follow
+// the reference in every frame (none marked where it parts). Returns the report.
+std::string expectReplays(const fs::path& out, bool correct) {
+  const std::string html = readAll(out / "report.html");
+  std::size_t scenes = 0, parted = 0;
+  for (std::size_t at = html.find("class=\"replay-box\""); at != std::string::npos;
+       at = html.find("class=\"replay-box\"", at + 1)) {
+    ++scenes;
+  }
+  for (std::size_t at = html.find("{\"parted\": "); at != std::string::npos;
+       at = html.find("{\"parted\": ", at + 1)) {
+    parted += html.compare(at + 11, 2, "-1") != 0;
+  }
+  EXPECT_GE(scenes, 14u) << "a replay per imaged scene";
+  EXPECT_EQ(html.find("No replay:"), std::string::npos) << "every scene has its replay";
+  EXPECT_LT(html.size(), 3u << 20) << "the report stays small";
+  if (correct) EXPECT_EQ(parted, 0u) << "a correct solution's replays never part";
+  return html;
+}
+
 // A wrong version with a model in the library is named, first in every failed item of its
 // task (Gradescope's output leads with it, extra_data carries it); no other mistake is named.
 void expectMistakeNamed(const Graded& g, const std::string& name, const std::set<int>& failing) {
@@ -207,6 +227,7 @@ TEST(Scores, TheSolutionGetsEveryPoint) {
   const auto got = perTask(g.results, false), full = perTask(g.results, true);
   for (const auto& [task, points] : full) EXPECT_DOUBLE_EQ(got.at(task), points) << "task " << task;
   expectNoMistakeNamed(g);
+  expectReplays(dir / "out", true);
 }
 
 // The hidden checks draw other inputs at another seed: still every point, and no mistake named.
@@ -282,6 +303,10 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
   std::printf("[ scores   ] %s (fail: %s): score %s; per task%s\n", name.c_str(), named.c_str(),
               g.results["score"].dump().c_str(), table.str().c_str());
   expectMistakeNamed(g, name, failing);
+  const std::string html = expectReplays(dir / "out", false);
+  std::printf("[ replays  ] %s: report.html %zu bytes\n", name.c_str(), html.size());
+  // A wrong stepper's failed checks are replayed beside the reference stepper.
+  if (failing.count(3) != 0) EXPECT_NE(html.find("id=\"replay-Task3"), std::string::npos);
   // Which checks failed outside the wrong tasks, and whether an image may.
   for (const auto& [check, outcome] : g.results["extra_data"]["tests"].items()) {
     if (outcome != "failed") continue;
@@ -336,6 +361,7 @@ TEST_P(CorrectAlternative, GetsEveryPoint) {
   for (const RubricItem& item : rubric().items) all += item.points;
   EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), all) << g.results.dump(2).substr(0, 8000);
   expectNoMistakeNamed(g);
+  expectReplays(dir / "out", true);
   std::string notes;
   for (const json& t : g.results["tests"]) {
     const std::string output = t.value("output", "");
