@@ -159,7 +159,9 @@ std::string expectReplays(const fs::path& out, bool correct) {
   EXPECT_GE(scenes, 14u) << "a replay per imaged scene";
   EXPECT_EQ(html.find("No replay:"), std::string::npos) << "every scene has its replay";
   EXPECT_LT(html.size(), 3u << 20) << "the report stays small";
-  if (correct) EXPECT_EQ(parted, 0u) << "a correct solution's replays never part";
+  if (correct) {
+    EXPECT_EQ(parted, 0u) << "a correct solution's replays never part";
+  }
   return html;
 }
 
@@ -306,7 +308,9 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
   const std::string html = expectReplays(dir / "out", false);
   std::printf("[ replays  ] %s: report.html %zu bytes\n", name.c_str(), html.size());
   // A wrong stepper's failed checks are replayed beside the reference stepper.
-  if (failing.count(3) != 0) EXPECT_NE(html.find("id=\"replay-Task3"), std::string::npos);
+  if (failing.count(3) != 0) {
+    EXPECT_NE(html.find("id=\"replay-Task3"), std::string::npos);
+  }
   // Which checks failed outside the wrong tasks, and whether an image may.
   for (const auto& [check, outcome] : g.results["extra_data"]["tests"].items()) {
     if (outcome != "failed") continue;

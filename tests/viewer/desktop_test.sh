@@ -37,13 +37,13 @@ viewer_pid=$!
 sleep 3
 kill -0 "$viewer_pid" 2>/dev/null || { cat "$out/viewer.log"; echo "FAIL: the viewer exited"; exit 1; }
 # Chromium's virtual time does not wait for the VNC connection, only for pending requests: the
-# noVNC page is shown in a frame of a page that holds one request for 4 s of real time
+# noVNC page is shown in a frame of a page that holds one request for 10 s of real time
 # (hold_page.py), so that noVNC connects and draws before the shot. Should it still say
 # "Connecting...", the page is shot again until the check passes, up to 8 times (a failed check
 # is printed each time).
 hold_port=$((port + 1000))
 python3 "$(dirname "$0")/hold_page.py" "$hold_port" \
-  "http://localhost:$port/vnc.html?autoconnect=true&quality=9" 4 >"$out/hold.log" 2>&1 &
+  "http://localhost:$port/vnc.html?autoconnect=true&quality=9" 10 >"$out/hold.log" 2>&1 &
 hold_pid=$!
 for _ in $(seq 100); do (exec 3<>"/dev/tcp/127.0.0.1/$hold_port") 2>/dev/null && break; sleep 0.1; done
 for attempt in 1 2 3 4 5 6 7 8; do
