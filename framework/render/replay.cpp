@@ -61,7 +61,7 @@ class Packer {
   void put(double metres) {
     std::int16_t q = kNotFinite;
     if (std::isfinite(metres))
-      q = static_cast<std::int16_t>(std::clamp(std::lround(metres / unit_), -32767L, 32767L));
+      q = static_cast<std::int16_t>(std::lround(std::clamp(metres / unit_, -32767.0, 32767.0)));
     const auto u = static_cast<std::uint16_t>(q);
     bytes_.push_back(static_cast<unsigned char>(u & 0xff));
     bytes_.push_back(static_cast<unsigned char>(u >> 8));
