@@ -1,5 +1,7 @@
 // Task 1, the spring force: the reference f2 = -ks (l - l0) e - kd ((v2 - v1)·e) e, and the
 // mistakes of tests/wrong/t1_*, each answering SpringForceRequest as that wrong version does.
+#include <optional>
+
 #include "mistakes/library/compare.h"
 #include "mistakes/library/models.h"
 
@@ -29,15 +31,22 @@ Vec2 springForce(const SpringForceRequest& r, Flaw flaw) {
   }
 }
 
+// The answer as the checks get it.
+std::optional<harness::SpringForceResult> answer(const SpringForceRequest& r, Flaw flaw) {
+  harness::SpringForceResult out;
+  out.force = springForce(r, flaw);
+  return out;
+}
+
+bool same(const harness::SpringForceResult& a, const harness::SpringForceResult& b) {
+  return near(a.force, b.force);
+}
+
 MistakeModel model(const char* id, Flaw flaw, const char* text) {
   auto judge = [flaw](const Transcript& t) {
-    auto same = [](const Vec2& a, const Vec2& b) { return near(a, b); };
-    std::vector<Likeness> out;
-    for (const auto& x : t.springs) {
-      out.push_back(likeness(x.result.force, springForce(x.request, Flaw::None),
-                             springForce(x.request, flaw), same));
-    }
-    return out;
+    return judgeEach(
+        t.springs, [](const SpringForceRequest& r) { return answer(r, Flaw::None); },
+        [flaw](const SpringForceRequest& r) { return answer(r, flaw); }, same);
   };
   return MistakeModel{id, 1, text, judge};
 }

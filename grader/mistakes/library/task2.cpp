@@ -1,6 +1,8 @@
 // Task 2, the forces: the reference gravity m g, buoyancy b (T - T_air)(0,1), drag -k_d v,
 // repulsion k_r d n while inside and their sum over every obstacle, and the mistakes of
 // tests/wrong/t2_*, each answering ForcesRequest as that wrong version does.
+#include <optional>
+
 #include "mistakes/library/compare.h"
 #include "mistakes/library/models.h"
 
@@ -55,12 +57,9 @@ bool same(const ForcesResult& a, const ForcesResult& b) {
 
 MistakeModel model(const char* id, Flaw flaw, const char* text) {
   auto judge = [flaw](const Transcript& t) {
-    std::vector<Likeness> out;
-    for (const auto& x : t.forces) {
-      out.push_back(
-          likeness(x.result, forces(x.request, Flaw::None), forces(x.request, flaw), same));
-    }
-    return out;
+    return judgeEach(
+        t.forces, [](const ForcesRequest& r) { return std::optional(forces(r, Flaw::None)); },
+        [flaw](const ForcesRequest& r) { return std::optional(forces(r, flaw)); }, same);
   };
   return MistakeModel{id, 2, text, judge};
 }

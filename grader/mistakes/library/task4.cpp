@@ -4,6 +4,7 @@
 // as a set (ends in either order, any creation order), particles in the layout's order.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <tuple>
 
 #include "mistakes/library/compare.h"
@@ -127,14 +128,17 @@ bool same(const ClothResult& a, const ClothResult& b) {
   return true;
 }
 
+// The cloth of a spec the checks asked for (none beyond 200 cells a side: not a check's).
+std::optional<ClothResult> answer(const ClothSpec& spec, Flaw flaw) {
+  if (spec.n < 1 || spec.n > 200) return std::nullopt;
+  return cloth(spec, flaw);
+}
+
 MistakeModel model(const char* id, Flaw flaw, const char* text) {
   auto judge = [flaw](const Transcript& t) {
-    std::vector<Likeness> out;
-    for (const auto& x : t.cloths) {
-      if (x.request.n < 1 || x.request.n > 200) continue;
-      out.push_back(likeness(x.result, cloth(x.request, Flaw::None), cloth(x.request, flaw), same));
-    }
-    return out;
+    return judgeEach(
+        t.cloths, [](const ClothSpec& s) { return answer(s, Flaw::None); },
+        [flaw](const ClothSpec& s) { return answer(s, flaw); }, same);
   };
   return MistakeModel{id, 4, text, judge};
 }
