@@ -34,7 +34,7 @@ Tolerance tol(const harness::SpringForceRequest& r) {
 
 Vec2 forceOf(const harness::SpringForceRequest& r) {
   const harness::SpringForceResult result = student().springForce(r);
-  EXPECT_TRUE(result.ok()) << currentTask() << ": " << result.error;
+  A6_EXPECT_RAN(result);
   return result.force;
 }
 

@@ -14,11 +14,21 @@
 #include "gtest_flags.h"
 #include "probe/probe_client.h"
 #include "suite.h"
+#include "watched_student.h"
 
 namespace fs = std::filesystem;
 
 namespace a6::grader {
 namespace {
+
+// The names of the checks that failed, in run order.
+std::vector<std::string> failedChecks(const std::vector<TestOutcome>& tests) {
+  std::vector<std::string> failed;
+  for (const TestOutcome& t : tests) {
+    if (!t.passed) failed.push_back(t.name);
+  }
+  return failed;
+}
 
 // The reference force models (tasks 1 and 2 solved; in a student release, empty: the student's
 // own). They stay in this process: the probe of tasks 3 and 5 asks for each force over a pipe
@@ -210,7 +220,8 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
   BudgetedStudent student(probes.get(), hooksOf(probes.get()), unavailable);
   student.setTotalBudget(in.timeBudget);
   RecordingStudent recorded(student);
-  gStudent = &recorded;
+  a6::test::WatchedStudent watched(recorded);
+  gStudent = &watched;
   int skipped = 0;
   try {
     skipped = runAll(rubric, run, student, in.progress);
@@ -234,8 +245,11 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
       // After the incidents are counted: the replays are feedback, never a check's. A student
       // release has no reference replays, and so no replays.
       run.replayFolder = a6::test::replayFolder();
-      if (in.replays && fs::is_directory(run.replayFolder))
+      if (in.replays && fs::is_directory(run.replayFolder)) {
         run.replays = runReplays(student, a6::test::imagedScenes());
+        run.particleTrajectories =
+            runParticleTrajectories(student, recorded.transcript(), failedChecks(run.tests));
+      }
     } catch (...) {
     }
   }

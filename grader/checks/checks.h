@@ -75,6 +75,8 @@ struct ChecksRun {
   Transcript transcript;          ///< what the public checks asked and the student's code answered
   std::vector<SceneRun> replays;  ///< the imaged scenes run again at replay frames, for the report
   std::filesystem::path replayFolder;  ///< the reference replays (render/replay.h) beside them
+  /// Failed particle checks' runs asked again at many step counts, for the report.
+  std::vector<ParticleTrajectory> particleTrajectories;
 };
 
 /// Runs every registered check against the probes of `input` (registerChecks first).

@@ -137,7 +137,8 @@ class Grading {
   std::string unavailable_;          // why there is no probe to run the checks against, or ""
   Transcript transcript_;            // the public checks' requests and the student's answers
   std::vector<SceneRun> sceneRuns_;  // the imaged scenes run again, for the replays
-  fs::path replayFolder_;            // the reference replays
+  std::vector<ParticleTrajectory> particleTrajectories_;  // failed particle checks run again
+  fs::path replayFolder_;                                 // the reference replays
 };
 
 // The report's heading, and a results.json from the start: if this process dies, Gradescope
@@ -323,6 +324,7 @@ void Grading::check() {
   report_.incidents.startFailures += run.incidents.startFailures;
   transcript_ = std::move(run.transcript);
   sceneRuns_ = std::move(run.replays);
+  particleTrajectories_ = std::move(run.particleTrajectories);
   replayFolder_ = run.replayFolder;
 }
 
@@ -349,8 +351,8 @@ void Grading::nameMistakes() {
   }
 }
 
-// 5. The replays: each imaged scene's run beside the reference's, and task 3's failed checks'
-// simulations beside the reference stepper's, measured for the report.
+// 5. The replays: each imaged scene's run beside the reference's, and the failed checks' runs
+// (task 3's simulations, task 5's particles) beside the reference's, measured for the report.
 void Grading::buildReplays() {
   std::vector<std::string> failed;
   for (const TestOutcome& t : report_.tests) {
@@ -360,10 +362,13 @@ void Grading::buildReplays() {
     report_.replays = grader::buildReplays(sceneRuns_, replayFolder_);
     for (ReplayView& v : trajectoryReplays(transcript_, failed))
       report_.replays.push_back(std::move(v));
+    for (ReplayView& v : particleTrajectoryReplays(particleTrajectories_))
+      report_.replays.push_back(std::move(v));
   } catch (const std::exception& e) {
     report_.notes.push_back(std::string("building the replays failed: ") + e.what());
   }
   sceneRuns_.clear();
+  particleTrajectories_.clear();
   transcript_ = Transcript{};
 }
 

@@ -13,4 +13,8 @@ std::optional<harness::SimulateResult> referenceSimulation(const harness::Simula
   return std::nullopt;
 }
 
+std::optional<harness::ParticlesResult> referenceParticleRun(const harness::ParticleRunRequest&) {
+  return std::nullopt;
+}
+
 }  // namespace a6::grader

@@ -139,7 +139,7 @@ ReplayView viewOf(const SceneRun& run, const std::filesystem::path& referenceDir
       readReference(referenceDir / (run.scene + ".json"), packed, v.missing);
   if (!ref) return v;
   if (!run.result.ok()) {
-    v.missing = "your code failed while the scene ran again for this replay: " + run.result.error;
+    v.missing = run.result.error;
     return v;
   }
   if (ref->frames != run.frames || run.result.snapshots.size() != run.frames.size()) {
@@ -154,23 +154,21 @@ ReplayView viewOf(const SceneRun& run, const std::filesystem::path& referenceDir
   return v;
 }
 
-// Task 3's trajectories ----------------------------------------------------------------------
+// The failed checks' trajectories (tasks 3 and 5) -----------------------------------------------
 
 constexpr std::size_t kTrajectories = 4;       // replayed failed checks at most
 constexpr std::size_t kTrajectoryFrames = 61;  // frames of one, at most
 constexpr std::size_t kTrajectoryParticles = 2000;
 
-// A view that holds every finite position of the reference's run, with a margin.
-View viewAround(const harness::SimulateRequest& r, const harness::SimulateResult& ref) {
+// A view that holds every finite position of `states`, with a margin.
+View viewAround(const std::vector<const std::vector<Particle>*>& states) {
   Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
-  auto take = [&](const std::vector<Particle>& ps) {
-    for (const Particle& p : ps) {
+  for (const std::vector<Particle>* ps : states) {
+    for (const Particle& p : *ps) {
       if (std::isfinite(p.x.x()) && std::isfinite(p.x.y()))
         lo = lo.cwiseMin(p.x), hi = hi.cwiseMax(p.x);
     }
-  };
-  take(r.particles);
-  for (const auto& state : ref.states) take(state);
+  }
   View view;
   if (!(lo.x() <= hi.x())) return view;
   view.center = (lo + hi) / 2;
@@ -178,32 +176,60 @@ View viewAround(const harness::SimulateRequest& r, const harness::SimulateResult
   return view;
 }
 
-// The request's initial state, then about kTrajectoryFrames of the recorded ones, as a run.
-replay::Recording trajectory(const harness::SimulateRequest& r, const harness::SimulateResult& run,
-                             const View& view) {
+// A check's run drawn as a replay: its states in `view`, with the environment's obstacles and,
+// in the first frame, the springs.
+struct TrajectoryRecorder {
+  const Environment& env;
+  const std::vector<SpringData>& springs;
+  View view;
   replay::Recording rec;
-  rec.scene = "trajectory";
-  rec.frameDt = r.frameDt;
-  rec.gravity = r.env.gravity;
-  auto frame = [&](int number, const std::vector<Particle>& particles) {
+
+  TrajectoryRecorder(const Environment& e, const std::vector<SpringData>& sp, const View& v,
+                     double frameDt)
+      : env(e), springs(sp), view(v) {
+    rec.scene = "trajectory";
+    rec.frameDt = frameDt;
+    rec.gravity = env.gravity;
+  }
+  void frame(int number, const std::vector<Particle>& particles) {
     Snapshot s;
     s.particles = particles;
     s.view = view;
     s.particleRadius = view.height / 150;
-    s.planes = r.env.planes;
-    s.circles = r.env.circles;
-    if (rec.frames.empty()) s.springs = r.springs;
+    s.planes = env.planes;
+    s.circles = env.circles;
+    if (rec.frames.empty()) s.springs = springs;
     rec.frames.push_back(number);
     rec.snapshots.push_back(std::move(s));
-  };
-  frame(0, r.particles);
+  }
+};
+
+// The request's initial state, then about kTrajectoryFrames of the recorded ones, as a run.
+replay::Recording trajectory(const harness::SimulateRequest& r, const harness::SimulateResult& run,
+                             const View& view) {
+  TrajectoryRecorder out(r.env, r.springs, view, r.frameDt);
+  out.frame(0, r.particles);
   const std::size_t n = run.states.size(),
                     every = (n + kTrajectoryFrames - 2) / (kTrajectoryFrames - 1);
   for (std::size_t k = 0; k < n; ++k) {
     if (k % std::max<std::size_t>(every, 1) == 0 || k + 1 == n)
-      frame(run.recordedFrames[k], run.states[k]);
+      out.frame(run.recordedFrames[k], run.states[k]);
   }
-  return rec;
+  return std::move(out.rec);
+}
+
+// The two runs compared as a trajectory replay of `check`; none when they never differ.
+std::optional<ReplayView> trajectoryView(const std::string& check, int task,
+                                         const replay::Recording& mine,
+                                         const replay::Recording& ref, const View& view) {
+  ReplayView v;
+  v.scene = check;
+  v.task = task;
+  v.trajectory = true;
+  compareRuns(v, replay::pack(mine), replay::pack(ref));
+  const auto most = std::max_element(v.error.begin(), v.error.end());
+  if (most != v.error.end() && !(*most <= 1e-9 * view.height)) return v;
+  return std::nullopt;
 }
 
 // The first exchange of `check` the reference can answer and the student's run differs from.
@@ -214,17 +240,39 @@ std::optional<ReplayView> trajectoryOf(const Transcript& t, const std::string& c
     if (!ref || ref->states.size() != x.result.states.size() ||
         ref->recordedFrames != x.result.recordedFrames || ref->states.empty())
       continue;
-    const View view = viewAround(x.request, *ref);
-    ReplayView v;
-    v.scene = check;
-    v.task = 3;
-    v.trajectory = true;
-    compareRuns(v, replay::pack(trajectory(x.request, x.result, view)),
-                replay::pack(trajectory(x.request, *ref, view)));
-    const auto most = std::max_element(v.error.begin(), v.error.end());
-    if (most != v.error.end() && !(*most <= 1e-9 * view.height)) return v;
+    std::vector<const std::vector<Particle>*> states{&x.request.particles};
+    for (const auto& state : ref->states) states.push_back(&state);
+    const View view = viewAround(states);
+    if (auto v = trajectoryView(check, 3, trajectory(x.request, x.result, view),
+                                trajectory(x.request, *ref, view), view))
+      return v;
   }
   return std::nullopt;
+}
+
+// A task-5 check's particles after each sampled step count, the student's and the reference's.
+std::optional<ReplayView> particleTrajectoryOf(const ParticleTrajectory& t) {
+  std::vector<harness::ParticlesResult> refs;
+  for (int steps : t.steps) {
+    harness::ParticleRunRequest r = t.request;
+    r.steps = steps;
+    std::optional<harness::ParticlesResult> ref = referenceParticleRun(r);
+    if (!ref) return std::nullopt;
+    refs.push_back(std::move(*ref));
+  }
+  std::vector<const std::vector<Particle>*> states{&t.request.initial};
+  for (const auto& ref : refs) states.push_back(&ref.particles);
+  const View view = viewAround(states);
+  const std::vector<SpringData> none;
+  TrajectoryRecorder mine(t.request.env, none, view, t.request.dt),
+      theirs(t.request.env, none, view, t.request.dt);
+  mine.frame(0, t.request.initial);
+  theirs.frame(0, t.request.initial);
+  for (std::size_t k = 0; k < t.steps.size() && k < t.runs.size(); ++k) {
+    mine.frame(t.steps[k], t.runs[k].particles);
+    theirs.frame(t.steps[k], refs[k].particles);
+  }
+  return trajectoryView(t.check, 5, mine.rec, theirs.rec, view);
 }
 
 }  // namespace
@@ -272,6 +320,14 @@ std::vector<ReplayView> trajectoryReplays(const Transcript& transcript,
     if (views.size() >= kTrajectories || check.rfind("Task3", 0) != 0) continue;
     if (std::optional<ReplayView> v = trajectoryOf(transcript, check))
       views.push_back(std::move(*v));
+  }
+  return views;
+}
+
+std::vector<ReplayView> particleTrajectoryReplays(const std::vector<ParticleTrajectory>& runs) {
+  std::vector<ReplayView> views;
+  for (const ParticleTrajectory& t : runs) {
+    if (std::optional<ReplayView> v = particleTrajectoryOf(t)) views.push_back(std::move(*v));
   }
   return views;
 }

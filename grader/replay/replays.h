@@ -22,6 +22,11 @@ std::vector<ReplayView> buildReplays(const std::vector<SceneRun>& runs,
 std::vector<ReplayView> trajectoryReplays(const Transcript& transcript,
                                           const std::vector<std::string>& failedChecks);
 
+/// Task 5's failed checks' runs of particles (checks/replays.h: runParticleTrajectories),
+/// replayed beside the reference's update at the same step counts (mistakes.h:
+/// referenceParticleRun; none without the library of mistakes), for those whose runs differ.
+std::vector<ReplayView> particleTrajectoryReplays(const std::vector<ParticleTrajectory>& runs);
+
 /// What the plot's shape means (public for the tests): energies (empty when unknown) over the
 /// frames, the error per frame, the frame index where the positions part (-1: never), and the
 /// time of each frame.

@@ -219,9 +219,13 @@ void replayBlock(std::ostringstream& out, const ReplayView& v) {
     out << "<p class=\"note\">No replay: " << htmlEscape(v.missing) << "</p></section>\n";
     return;
   }
-  if (v.trajectory) {
+  if (v.trajectory && v.task == 3) {
     out << "<p>This check's own input, run by your stepper and by the reference's, both with the "
            "reference forces.</p>\n";
+  } else if (v.trajectory) {
+    out << "<p>This check's own particles, updated by your particle system and by the "
+           "reference's, both with the reference forces, stopped after each of "
+        << v.frames.size() - 1 << " step counts.</p>\n";
   }
   out << "<p class=\"reading\">" << htmlEscape(v.reading) << "</p>\n<div class=\"replay\">";
   player(out, v);
@@ -303,7 +307,7 @@ void htmlReplays(std::ostringstream& out, const std::vector<ReplayView>& replays
     if (!v.trajectory) replayBlock(out, v);
   }
   if (std::any_of(replays.begin(), replays.end(), [](const ReplayView& v) { return v.trajectory; }))
-    out << "<h3>Task 3's failed checks, replayed</h3>\n";
+    out << "<h3>Failed checks, replayed</h3>\n";
   for (const ReplayView& v : replays) {
     if (v.trajectory) replayBlock(out, v);
   }

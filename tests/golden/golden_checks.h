@@ -33,6 +33,9 @@ struct ImagedScene {
   std::string scene;
   int lastFrame = 0;
   int task = 0;  ///< the task its images are filed under (the first image's)
+  /// How the images' run of the scene ended, when it failed (it ran out of time, crashed, ...);
+  /// ok when it ran well or has not run.
+  harness::SceneResult imagesRun;
 };
 /// The scenes of the public manifest, in the manifest's order (empty without a manifest).
 std::vector<ImagedScene> imagedScenes();

@@ -76,6 +76,12 @@ class Scenes {
   /// Frames each scene's images need.
   void need(const std::string& scene, int frame) { frames_[scene].push_back(frame); }
 
+  /// The failed run of `scene` (its fault and error), or null when it ran well or not at all.
+  const harness::SceneResult* failedRun(const std::string& scene) const {
+    auto it = runs_.find(scene);
+    return it == runs_.end() || it->second.ok() ? nullptr : &it->second;
+  }
+
   /// The snapshot of `scene` after `frame` frames, or the harness's error.
   const Snapshot* snapshot(const std::string& scene, int frame, std::string* error) {
     auto it = runs_.find(scene);
@@ -199,6 +205,12 @@ std::string hintFor(const GoldenImage& image) {
          (failing.size() == 1 ? "fails its" : "fail their") + " checks: fix that first";
 }
 
+// The hint for a scene the student's code did not finish: another task's failing code named, as
+// hintFor does, but never this image's own hint (it explains a wrong picture, not a crash).
+std::string failedRunHint(const GoldenImage& image) {
+  return failingEarlierTasks(image).empty() ? "" : "\n  hint: " + hintFor(image);
+}
+
 class GoldenImageTest : public ::testing::Test {
  public:
   GoldenImageTest(GoldenImage image, std::string folder)
@@ -214,7 +226,7 @@ class GoldenImageTest : public ::testing::Test {
     std::string error;
     const Snapshot* snapshot = Scenes::get().snapshot(image_.scene, image_.frame, &error);
     ASSERT_NE(snapshot, nullptr) << header(image_) << "  the student code failed: " << error
-                                 << "\n  hint: " << hintFor(image_);
+                                 << failedRunHint(image_);
     // This process draws and compares.
     const Image actual = session.renderer().render(*snapshot, image_.width, image_.height);
     ASSERT_FALSE(actual.empty()) << header(image_) << "  " << session.renderer().error();
@@ -321,7 +333,9 @@ std::vector<ImagedScene> imagedScenes() {
     auto same = [&](const ImagedScene& s) { return s.scene == image.scene; };
     auto found = std::find_if(scenes.begin(), scenes.end(), same);
     if (found == scenes.end()) {
-      scenes.push_back({image.scene, image.frame, image.task});
+      scenes.push_back({image.scene, image.frame, image.task, {}});
+      if (const harness::SceneResult* failed = Scenes::get().failedRun(image.scene))
+        scenes.back().imagesRun.fail(failed->fault, failed->error);
     } else {
       found->lastFrame = std::max(found->lastFrame, image.frame);
     }

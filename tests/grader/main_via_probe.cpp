@@ -19,14 +19,16 @@
 #include "sandbox_user.h"
 #include "suite.h"
 #include "summary.h"
+#include "watched_student.h"
 
 namespace {
 #include A6_FORCE_MODELS  // the reference forces the probe asks for (harness/force_channel.h)
 std::unique_ptr<a6::grader::ProbeClient> gProbe;
+std::unique_ptr<a6::test::WatchedStudent> gWatched;
 }  // namespace
 
 namespace a6::test {
-harness::StudentCode& student() { return *gProbe; }
+harness::StudentCode& student() { return *gWatched; }
 }  // namespace a6::test
 
 int main(int argc, char** argv) {
@@ -50,10 +52,12 @@ int main(int argc, char** argv) {
       std::filesystem::absolute(probe), std::filesystem::path(work) / "run", a6::grader::Limits{});
   gProbe->setUser(a6::test::sandboxUid(), 65534);  // ours alone: other tests run beside us
   gProbe->serveForces(referenceForceModel());
+  gWatched = std::make_unique<a6::test::WatchedStudent>(*gProbe);
   ::testing::UnitTest::GetInstance()->listeners().Append(new a6::test::TaskSummary);
   const int status = RUN_ALL_TESTS();
   std::printf("A6-PROBE starts=%d\n", gProbe->starts());
   for (const std::string& note : gProbe->notes()) std::printf("A6-PROBE note: %s\n", note.c_str());
+  gWatched.reset();
   gProbe.reset();
   std::error_code ec;
   std::filesystem::remove_all(work, ec);

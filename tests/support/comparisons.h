@@ -18,6 +18,7 @@ struct ComparisonLog {
   double largestFailingRatio = 0;  ///< max |difference| / tolerance over failing ones
   double agreement = 0;            ///< max |difference| / scale over exact comparisons
   int reportedFailures = 0;        ///< GoogleTest failures that came from comparisons
+  bool codeFailed = false;         ///< the student's code gave no answer to a request
 };
 
 /// The log of `check`: empty if no comparison of that check ran.

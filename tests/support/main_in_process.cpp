@@ -8,15 +8,17 @@
 #include "brief_failures.h"
 #include "suite.h"
 #include "summary.h"
+#include "watched_student.h"
 
 namespace {
 #include A6_FORCE_MODELS  // reference_models.inc, or own_models.inc in a student release
 
 std::unique_ptr<a6::harness::StudentCode> gStudent;
+std::unique_ptr<a6::test::WatchedStudent> gWatched;
 }  // namespace
 
 namespace a6::test {
-harness::StudentCode& student() { return *gStudent; }
+harness::StudentCode& student() { return *gWatched; }
 }  // namespace a6::test
 
 // --summary-only: GoogleTest's own printer is left out, so a run prints the summary per task and
@@ -35,6 +37,7 @@ int main(int argc, char** argv) {
   ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
   if (summaryOnly || !log.empty()) delete listeners.Release(listeners.default_result_printer());
   gStudent = a6::harness::makeInProcess(referenceForceModel());
+  gWatched = std::make_unique<a6::test::WatchedStudent>(*gStudent);
   // GoogleTest tells the end of the run to its listeners last first: the summary comes first.
   if (!log.empty()) listeners.Append(new a6::test::BriefFailures(log));
   listeners.Append(new a6::test::TaskSummary(summaryOnly));

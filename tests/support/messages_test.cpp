@@ -1,5 +1,6 @@
 // The words of the checks' messages (suite.h, quantities.h): numbers for people, quantities named
 // in words with their units, never by the checks' own code.
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -49,6 +50,58 @@ TEST(Messages, AFailureNamesTheQuantityWithItsUnitNotTheCode) {
   EXPECT_NE(text.find("expected: (-10, 0) N"), std::string::npos) << text;
   EXPECT_NE(text.find("actual:   (10, 0) N"), std::string::npos) << text;
   EXPECT_EQ(text.find("forceOf"), std::string::npos) << text;
+}
+
+// The messages GoogleTest gives the failures of `assertions`, as a student reads them.
+template <class Assertions>
+std::vector<std::string> readAs(Assertions assertions) {
+  ::testing::TestPartResultArray parts;
+  {
+    ::testing::ScopedFakeTestPartResultReporter reporter(
+        ::testing::ScopedFakeTestPartResultReporter::INTERCEPT_ONLY_CURRENT_THREAD, &parts);
+    assertions();
+  }
+  std::vector<std::string> messages;
+  for (int k = 0; k < parts.size(); ++k) messages.push_back(messageOf(parts.GetTestPartResult(k)));
+  return messages;
+}
+
+::testing::AssertionResult refused() {
+  return ::testing::AssertionFailure() << "Task 3 (time_stepping.cpp): expected 2 states (a)";
+}
+
+TEST(Messages, GoogleTestsOwnWordsAreLeftOut) {
+  const harness::SpringForceResult timedOut = [] {
+    harness::SpringForceResult r;
+    r.fail(harness::Fault::TimedOut, "your code took longer than 2 s");
+    return r;
+  }();
+  const int* none = nullptr;
+  const std::vector<std::string> read = readAs([&] {
+    EXPECT_TRUE(timedOut.ok()) << "the words after";
+    EXPECT_TRUE(refused());
+    EXPECT_NE(none, nullptr) << "the scene failed";
+    ADD_FAILURE() << "added";
+    A6_EXPECT_RAN(timedOut);
+  });
+  ASSERT_EQ(read.size(), 5u);
+  EXPECT_EQ(read[0], "the words after");
+  EXPECT_EQ(read[1], "Task 3 (time_stepping.cpp): expected 2 states (a)");
+  EXPECT_EQ(read[2], "the scene failed");
+  EXPECT_EQ(read[3], "added");
+  EXPECT_EQ(read[4], "Task ?: your code failed: your code took longer than 2 s");
+}
+
+TEST(Messages, AHintIsLeftOutOfACheckWhoseCodeGaveNoAnswer) {
+  EXPECT_EQ(hint("check the sign"), "\n  hint: check the sign");
+  noteCodeFailed();
+  EXPECT_TRUE(codeFailedInThisCheck());
+  EXPECT_EQ(hint("check the sign"), "");
+}
+
+TEST(Messages, TheNextCheckHasItsHintsAgain) {
+  EXPECT_FALSE(codeFailedInThisCheck());
+  EXPECT_EQ(hint("check the sign"), "\n  hint: check the sign");
 }
 
 }  // namespace

@@ -45,11 +45,41 @@ std::string str(const Particle& p) {
   return out + "}";
 }
 
-std::string hint(const std::string& text) { return "\n  hint: " + text; }
+namespace {
+
+bool startsWith(const std::string& text, const std::string& head) {
+  return text.rfind(head, 0) == 0;
+}
+
+// GoogleTest's words for a failed EXPECT_TRUE(expression) left out ("Value of: expression",
+// "Actual: false", "Expected: true"), keeping the message an AssertionResult carried in the
+// parentheses, and what follows.
+std::string withoutValueOf(const std::string& message) {
+  static const std::string kFalse = "\n  Actual: false", kTrue = "\nExpected: true";
+  const std::size_t actual = message.find(kFalse);
+  const std::size_t expected = message.rfind(kTrue);
+  if (actual == std::string::npos || expected == std::string::npos || expected < actual)
+    return message;
+  std::string carried = message.substr(actual + kFalse.size(), expected - actual - kFalse.size());
+  if (startsWith(carried, " (") && carried.back() == ')')
+    carried = carried.substr(2, carried.size() - 3);
+  std::string rest = message.substr(expected + kTrue.size());
+  if (startsWith(rest, "\n")) rest = rest.substr(1);
+  return carried.empty() ? rest : rest.empty() ? carried : carried + "\n" + rest;
+}
+
+}  // namespace
 
 std::string messageOf(const ::testing::TestPartResult& part) {
-  const std::string message = part.message();
-  return message.rfind("Failed\n", 0) == 0 ? message.substr(7) : message;
+  std::string message = part.message();
+  if (startsWith(message, "Failed\n")) return message.substr(7);
+  if (startsWith(message, "Value of: ")) return withoutValueOf(message);
+  // EXPECT_NE and friends: "Expected: (a) != (b), actual: x vs y", then the check's own words.
+  const std::size_t line = message.find('\n');
+  if (startsWith(message, "Expected: (") && line != std::string::npos &&
+      message.find(", actual: ") < line)
+    return message.substr(line + 1);
+  return message;
 }
 
 namespace {
@@ -62,6 +92,18 @@ ComparisonLog& currentLog() {
   if (gLog.check != info) gLog = ComparisonLog{info};
   return gLog;
 }
+
+}  // namespace
+
+std::string hint(const std::string& text) {
+  return codeFailedInThisCheck() ? "" : "\n  hint: " + text;
+}
+
+void noteCodeFailed() { currentLog().codeFailed = true; }
+
+bool codeFailedInThisCheck() { return currentLog().codeFailed; }
+
+namespace {
 
 // |difference| / tolerance: 0 for equal values, infinite for a non-finite value.
 double ratioOf(double difference, const Tolerance& tol) {

@@ -24,8 +24,13 @@ std::string num(double value);
 std::string str(const Vec2& v);
 std::string str(const Particle& p);
 
-/// Appended to a failure: what the student should look at.
+/// Appended to a failure: what the student should look at. Nothing when the student's code
+/// gave no answer in this check (a hint is written for a wrong answer, not for a crash).
 std::string hint(const std::string& text);
+/// Marks the running check: the student's code gave no answer to one of its requests.
+void noteCodeFailed();
+/// Whether noteCodeFailed was called during the running check.
+bool codeFailedInThisCheck();
 /// A failure's message for people: GoogleTest's "Failed" line (ADD_FAILURE's) left out.
 std::string messageOf(const ::testing::TestPartResult& part);
 
@@ -132,7 +137,16 @@ class ManyInputs {
   ASSERT_PRED_FORMAT3(::a6::test::scalarNear, actual, expected, tol)
 
 /// Stops the test when the student's code reported an error (an exception, or in the grader a
-/// crash or timeout), with that error in the message.
-#define A6_ASSERT_RAN(result)                             \
-  ASSERT_TRUE((result).ok()) << ::a6::test::currentTask() \
-                             << ": your code failed: " << (result).error
+/// crash or timeout), with that error in the message (and no GoogleTest "Value of:" lines: the
+/// student reads it).
+#define A6_ASSERT_RAN(result)         \
+  if ((result).ok()) {                \
+  } else                              \
+    GTEST_FAIL_AT(__FILE__, __LINE__) \
+        << ::a6::test::currentTask() << ": your code failed: " << (result).error
+/// The same, and the test goes on.
+#define A6_EXPECT_RAN(result)          \
+  if ((result).ok()) {                 \
+  } else                               \
+    ADD_FAILURE_AT(__FILE__, __LINE__) \
+        << ::a6::test::currentTask() << ": your code failed: " << (result).error
