@@ -307,10 +307,12 @@ class InProcess final : public StudentCode {
       if (!request.useDefaults) scene->reset(request.params);
       // Run to the last requested frame, recording on the way.
       result.snapshots.resize(request.frames.size());
+      result.energies.resize(request.frames.size());
       for (int frame = 0;; ++frame) {
         for (std::size_t k = 0; k < request.frames.size(); ++k) {
           if (request.frames[k] != frame) continue;
           result.snapshots[k] = scene->snapshot();
+          result.energies[k] = scene->energy();
           if (request.lean && k > 0) result.snapshots[k].springs.clear();
         }
         if (frame >= last) break;

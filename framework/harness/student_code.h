@@ -209,6 +209,9 @@ struct SceneRequest {
 };
 struct SceneResult : Outcome {
   std::vector<Snapshot> snapshots;  ///< snapshots[k] after request.frames[k] frames
+  /// energies[k]: the scene's own energies (Scene::energy) at snapshots[k]; a replay plots them
+  /// where a snapshot cannot tell them (Box2D bodies carry no masses or velocities).
+  std::vector<SceneEnergy> energies;
 };
 
 /// The student's code. Every call catches what it can and reports it in `error`.

@@ -202,8 +202,12 @@ void fields(V& v, harness::Box2DResult& r) {
   v("dragJoints", r.dragJoints), v("endDragCleared", r.endDragCleared);
 }
 template <class V>
+void fields(V& v, SceneEnergy& e) {
+  v("kinetic", e.kinetic), v("potential", e.potential);
+}
+template <class V>
 void fields(V& v, harness::SceneResult& r) {
-  v("snapshots", r.snapshots);
+  v("snapshots", r.snapshots), v("energies", r.energies);
 }
 
 }  // namespace a6::wire

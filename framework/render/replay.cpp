@@ -161,7 +161,12 @@ Json pack(const Recording& r) {
     packFrame(packer, s, out["shapes"]);
     counts.push_back({s.particles.size(), s.joints.size()});
     const Energy e = energyOf(s, first.springs, r.gravity);
-    if (e.known) energy.push_back({e.kinetic, e.potential});
+    const std::size_t k = counts.size() - 1;
+    if (e.known) {
+      energy.push_back({e.kinetic, e.potential});
+    } else if (r.energies.size() == r.snapshots.size()) {
+      energy.push_back({r.energies[k].kinetic, r.energies[k].potential});
+    }
   }
   out["counts"] = std::move(counts);
   out["energy"] = energy.size() == r.snapshots.size() ? std::move(energy) : Json::array();

@@ -15,7 +15,7 @@ namespace a6::replay {
 
 /// The energy of one snapshot, J. Known for particles (mass-spring systems and particle
 /// systems, 0 while there are none); Box2D's bodies are not in a snapshot with their masses, so
-/// unknown there.
+/// unknown there (a Recording's `energies`, the scene's own sum, stand in).
 struct Energy {
   double kinetic = 0;    ///< sum of ½ m |v|²
   double potential = 0;  ///< sum of -m g·x (gravity) and ½ ks (l - l0)² (springs)
@@ -35,6 +35,9 @@ struct Recording {
   Vec2 gravity = Vec2(0, -9.81);
   std::vector<int> frames;
   std::vector<Snapshot> snapshots;
+  /// The scene's own energies per snapshot (harness::SceneResult::energies), used where the
+  /// snapshots cannot tell them (Box2D bodies); may be empty.
+  std::vector<SceneEnergy> energies = {};
 };
 
 /// The packed form, as the player reads it:

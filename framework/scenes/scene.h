@@ -72,14 +72,6 @@ struct SceneInfo {
   unsigned uses = 0;        ///< SceneParamBit flags
 };
 
-/// Energies of a scene, J. Potential energy = gravity (measured from y = 0) + every spring
-/// (mass-spring springs, penalty contacts, Box2D joint springs and the mouse joint).
-struct SceneEnergy {
-  double kinetic = 0;
-  double potential = 0;
-  double total() const { return kinetic + potential; }
-};
-
 /// One running scene. Build it with makeScene(name); it starts reset to defaultParams(name).
 ///
 /// makeScene, reset, advanceFrame and the mouse calls run student code: they may throw (catch

@@ -44,6 +44,14 @@ struct View {
   double height = 4;         ///< m of world shown from bottom to top (width follows the aspect)
 };
 
+/// Energies of a scene, J. Potential energy = gravity (measured from y = 0) + every spring
+/// (mass-spring springs, penalty contacts, Box2D joint springs and the mouse joint).
+struct SceneEnergy {
+  double kinetic = 0;
+  double potential = 0;
+  double total() const { return kinetic + potential; }
+};
+
 struct Snapshot {
   std::string scene;
   double time = 0;  ///< s since the scene started

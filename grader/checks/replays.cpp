@@ -31,6 +31,8 @@ harness::SceneResult runInParts(harness::StudentCode& student, const std::string
     }
     if (from > 0) part.snapshots.front().springs.clear();
     for (Snapshot& s : part.snapshots) all.snapshots.push_back(std::move(s));
+    if (part.energies.size() == request.frames.size())
+      all.energies.insert(all.energies.end(), part.energies.begin(), part.energies.end());
   }
   return all;
 }

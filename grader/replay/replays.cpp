@@ -94,6 +94,16 @@ std::string population(const replay::Unpacked& mine, const replay::Unpacked& ref
   return "";
 }
 
+// What a Box2D scene's plots mean: its motors and joint springs put energy in and take it out,
+// so the energy tells no mistake by its shape; where the bodies part does.
+std::string readBodies(int parted, const std::vector<double>& times) {
+  if (parted < 0) return "Your run follows the reference: the positions agree in every frame.";
+  return "Your bodies part from the reference's at " +
+         seconds(times[static_cast<std::size_t>(parted)]) +
+         ": look at the joints in that frame (their anchors, limits, motors and springs); the "
+         "energy plot shows whether your bodies gained or lost energy the reference's did not.";
+}
+
 // The error, the energies (when both runs have them), where they part, and the reading.
 void measure(ReplayView& v, const replay::Unpacked& mine, const replay::Unpacked& ref) {
   const std::size_t frames = ref.frames.size();
@@ -117,7 +127,8 @@ void measure(ReplayView& v, const replay::Unpacked& mine, const replay::Unpacked
   }
   v.reading = ref.drawn ? population(mine, ref, v.times) : "";
   if (v.reading.empty())
-    v.reading = readPlot(v.studentEnergy, v.referenceEnergy, v.error, v.parted, v.times);
+    v.reading = bodies ? readBodies(v.parted, v.times)
+                       : readPlot(v.studentEnergy, v.referenceEnergy, v.error, v.parted, v.times);
 }
 
 // Sets the two packed runs side by side in `v`.
@@ -148,9 +159,10 @@ ReplayView viewOf(const SceneRun& run, const std::filesystem::path& referenceDir
         "instructor writes them again with a6_render_solution --replays)";
     return v;
   }
-  compareRuns(
-      v, replay::pack({run.scene, ref->frameDt, ref->gravity, run.frames, run.result.snapshots}),
-      packed);
+  compareRuns(v,
+              replay::pack({run.scene, ref->frameDt, ref->gravity, run.frames, run.result.snapshots,
+                            run.result.energies}),
+              packed);
   return v;
 }
 

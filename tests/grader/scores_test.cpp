@@ -156,7 +156,13 @@ std::string expectReplays(const fs::path& out, bool correct) {
        at = html.find("{\"parted\": ", at + 1)) {
     parted += html.compare(at + 11, 2, "-1") != 0;
   }
+  std::size_t energyPlots = 0;
+  for (std::size_t at = html.find(">kinetic + potential energy<"); at != std::string::npos;
+       at = html.find(">kinetic + potential energy<", at + 1)) {
+    ++energyPlots;
+  }
   EXPECT_GE(scenes, 14u) << "a replay per imaged scene";
+  EXPECT_EQ(energyPlots, scenes) << "an energy plot beside every replay, Box2D's bodies too";
   EXPECT_EQ(html.find("No replay:"), std::string::npos) << "every scene has its replay";
   EXPECT_LT(html.size(), 3u << 20) << "the report stays small";
   if (correct) {

@@ -357,6 +357,7 @@ TEST(WireFields, EveryMemberOfEveryTypeInsideIsListed) {
   everyMemberListed<JointData>("JointData");
   everyMemberListed<View>("View");
   everyMemberListed<Snapshot>("Snapshot");
+  everyMemberListed<SceneEnergy>("SceneEnergy");
   everyMemberListed<harness::DragEvent>("DragEvent");
   everyMemberListed<harness::BodyPose>("BodyPose");
   everyMemberListed<harness::BodyInfo>("BodyInfo");

@@ -478,8 +478,8 @@ int writeReplays(const Options& o) {
       return 1;
     }
     const SceneParams params = defaultParams(scene);
-    const replay::Recording recording{scene, params.dt, Vec2(0, -params.gravity), request.frames,
-                                      result.snapshots};
+    const replay::Recording recording{scene,          params.dt,        Vec2(0, -params.gravity),
+                                      request.frames, result.snapshots, result.energies};
     const std::string text = replay::pack(recording).dump() + "\n";
     const std::filesystem::path file = dir / (scene + ".json");
     std::ofstream(file, std::ios::binary) << text;
