@@ -15,20 +15,6 @@ constexpr std::int16_t kNotFinite = -32768;
 
 const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 
-std::string toBase64(const std::vector<unsigned char>& bytes) {
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const unsigned v = (bytes[i] << 16) | ((i + 1 < bytes.size() ? bytes[i + 1] : 0) << 8) |
-                       (i + 2 < bytes.size() ? bytes[i + 2] : 0);
-    out += kAlphabet[(v >> 18) & 63];
-    out += kAlphabet[(v >> 12) & 63];
-    out += i + 1 < bytes.size() ? kAlphabet[(v >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? kAlphabet[v & 63] : '=';
-  }
-  return out;
-}
-
 std::vector<unsigned char> fromBase64(const std::string& text) {
   std::vector<unsigned char> out;
   unsigned v = 0;
@@ -123,6 +109,20 @@ void packFrame(Packer& packer, const Snapshot& s, const Json& shapes) {
 
 }  // namespace
 
+std::string toBase64(const unsigned char* bytes, std::size_t size) {
+  std::string out;
+  out.reserve((size + 2) / 3 * 4);
+  for (std::size_t i = 0; i < size; i += 3) {
+    const unsigned v = (bytes[i] << 16) | ((i + 1 < size ? bytes[i + 1] : 0) << 8) |
+                       (i + 2 < size ? bytes[i + 2] : 0);
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += i + 1 < size ? kAlphabet[(v >> 6) & 63] : '=';
+    out += i + 2 < size ? kAlphabet[v & 63] : '=';
+  }
+  return out;
+}
+
 Energy energyOf(const Snapshot& s, const std::vector<SpringData>& springs, const Vec2& gravity) {
   Energy e;
   e.known = !s.particles.empty() || s.shapes.empty();
@@ -171,7 +171,7 @@ Json pack(const Recording& r) {
   out["counts"] = std::move(counts);
   out["energy"] = energy.size() == r.snapshots.size() ? std::move(energy) : Json::array();
   out["drawn"] = drawn;
-  out["data"] = toBase64(packer.bytes());
+  out["data"] = toBase64(packer.bytes().data(), packer.bytes().size());
   return out;
 }
 

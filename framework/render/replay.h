@@ -54,6 +54,10 @@ struct Recording {
 ///   so that runs compare by distribution, never particle by particle.
 nlohmann::json pack(const Recording& recording);
 
+/// `size` bytes as base64 (RFC 4648, with '=' padding): the packed data, and the report's
+/// embedded images.
+std::string toBase64(const unsigned char* bytes, std::size_t size);
+
 /// A packed recording read back: per frame, the particles' and the shapes' points, m (NaN where
 /// the packed number was not finite), and the energies.
 struct Unpacked {

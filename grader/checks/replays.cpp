@@ -48,16 +48,19 @@ std::vector<int> sampleSteps(int steps) {
   return out;
 }
 
-// The first run of `check` a trajectory can be drawn from: particles already alive, moved by the
-// reference forces, few enough to draw.
+// The longest run of `check` a trajectory can be drawn from (a check that runs 1, 2, ... steps
+// shows most in its last): particles already alive, moved by the reference forces, few enough
+// to draw.
 const harness::ParticleRunRequest* replayableRun(const Transcript& t, const std::string& check) {
+  const harness::ParticleRunRequest* longest = nullptr;
   for (const auto& x : t.particleRuns) {
     const harness::ParticleRunRequest& r = x.request;
     if (x.check == check && r.emitter.rate == 0 && r.referenceForces && !r.initial.empty() &&
-        r.initial.size() <= kParticlesPerTrajectory && r.steps >= 1 && r.steps <= 100000)
-      return &r;
+        r.initial.size() <= kParticlesPerTrajectory && r.steps >= 1 && r.steps <= 100000 &&
+        (longest == nullptr || r.steps > longest->steps))
+      longest = &r;
   }
-  return nullptr;
+  return longest;
 }
 
 }  // namespace
@@ -99,8 +102,8 @@ std::vector<SceneRun> runReplays(BudgetedStudent& student,
     if (!s.imagesRun.ok()) {
       // It would fail again, and take its time again.
       run.result.fail(s.imagesRun.fault,
-                      "your code failed this scene's images, so it was not run again for a "
-                      "replay: " +
+                      "the run of this scene for its images failed, so it was not run again "
+                      "for a replay: " +
                           s.imagesRun.error);
     } else if (left < 1) {
       run.result.fail(harness::Fault::NotRun, "the replays' time ran out before this scene");

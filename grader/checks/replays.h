@@ -30,7 +30,7 @@ constexpr int kTrajectorySamples = 60;
 constexpr std::size_t kParticlesPerTrajectory = 200;
 
 /// Up to `kParticleTrajectories` failed task-5 checks (`failed`, in run order), each with its
-/// first run of particles already alive (no emission, the reference forces, at most
+/// longest run of particles already alive (no emission, the reference forces, at most
 /// kParticlesPerTrajectory particles) asked again at kTrajectorySamples step counts up to its own,
 /// within kReplaySeconds each. A check whose code fails on them gets none.
 std::vector<ParticleTrajectory> runParticleTrajectories(BudgetedStudent& student,

@@ -155,12 +155,6 @@ std::string scriptSafe(const std::string& json) {
   return out;
 }
 
-std::string fixed(double x, int digits) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", digits, x);
-  return text;
-}
-
 // The energy plot's range: the reference's, widened to show the student's values up to one and
 // a half of its span beyond (further is off the chart: a run that blows up would flatten the
 // rest).
@@ -236,6 +230,12 @@ void replayBlock(std::ostringstream& out, const ReplayView& v) {
 }
 
 }  // namespace
+
+std::string fixed(double x, int digits) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f", digits, x);
+  return text;
+}
 
 std::string withUnit(double value, const std::string& unit) {
   if (!std::isfinite(value)) return "not a number";

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "render/replay.h"
 #include "report/replay_html.h"
 
 namespace a6::grader {
@@ -37,12 +38,6 @@ std::string cap(const std::string& text, std::size_t limit) {
 std::string fmt(double x) {
   std::ostringstream out;
   out << round4(x);
-  return out.str();
-}
-
-std::string fixed2(double x) {
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(2) << x;
   return out.str();
 }
 
@@ -481,29 +476,7 @@ std::string htmlEscape(const std::string& text) {
 }
 
 std::string base64(const std::string& bytes) {
-  static const char* const alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  std::size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
-                       (static_cast<unsigned char>(bytes[i + 1]) << 8) |
-                       static_cast<unsigned char>(bytes[i + 2]);
-    out += alphabet[(v >> 18) & 63];
-    out += alphabet[(v >> 12) & 63];
-    out += alphabet[(v >> 6) & 63];
-    out += alphabet[v & 63];
-  }
-  if (i < bytes.size()) {
-    unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
-    if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
-    out += alphabet[(v >> 18) & 63];
-    out += alphabet[(v >> 12) & 63];
-    out += i + 1 < bytes.size() ? alphabet[(v >> 6) & 63] : '=';
-    out += '=';
-  }
-  return out;
+  return replay::toBase64(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
 }
 
 namespace {
@@ -572,7 +545,7 @@ void htmlHead(std::ostringstream& out, const GradeReport& report) {
   out << "<p>Submission <code>" << htmlEscape(report.submission) << "</code> &middot; score <b>"
       << fmt(report.score - report.extraCredit) << " / " << fmt(report.maxScore) << "</b>";
   if (report.extraCredit > 0) out << " (+" << fmt(report.extraCredit) << " extra credit)";
-  out << " &middot; seed " << report.seed << " &middot; " << fixed2(report.seconds) << " s</p>\n";
+  out << " &middot; seed " << report.seed << " &middot; " << fixed(report.seconds, 2) << " s</p>\n";
   if (!report.refused.empty()) {
     out << "<div class=\"box error\"><b>Not graded</b><p>" << htmlEscape(report.refused)
         << "</p></div>\n";
@@ -662,7 +635,7 @@ void htmlItem(std::ostringstream& out, const GradeReport& report, const ScoredIt
     }
     htmlImages(out, *t);
     out << "</td><td class=\"" << (t->passed ? "pass\">passed" : "fail\">failed")
-        << "</td><td class=\"num\">" << fixed2(t->seconds) << "</td></tr>\n";
+        << "</td><td class=\"num\">" << fixed(t->seconds, 2) << "</td></tr>\n";
   }
   out << "</table>\n";
   if (const std::string note = precisionNote(s); !note.empty()) {
@@ -712,19 +685,19 @@ std::string terminalSummary(const GradeReport& report, bool color) {
   for (const ScoredItem& s : report.items) {
     std::string name = s.item.name + (s.item.extraCredit ? " [extra]" : "");
     if (name.size() > 45) name = name.substr(0, 42) + "...";
-    const std::string points = fixed2(s.score) + " / " + fixed2(s.item.points);
+    const std::string points = fixed(s.score, 2) + " / " + fixed(s.item.points, 2);
     out << "  " << std::left << std::setw(6) << s.number << std::setw(46) << name << std::right
         << std::setw(16) << points << "   " << (s.failed == 0 && !s.tests.empty() ? green : red)
         << s.passed << " passed, " << s.failed << " failed" << reset << "\n";
   }
   out << "  " << std::left << std::setw(52) << "total" << std::right << std::setw(16)
-      << (fixed2(report.score - report.extraCredit) + " / " + fixed2(report.maxScore));
-  if (report.extraCredit > 0) out << "   +" << fixed2(report.extraCredit) << " extra credit";
+      << (fixed(report.score - report.extraCredit, 2) + " / " + fixed(report.maxScore, 2));
+  if (report.extraCredit > 0) out << "   +" << fixed(report.extraCredit, 2) << " extra credit";
   out << "\n";
   if (const VisibleTotals v = visibleTotals(report); v.laterItems > 0) {
     out << "  " << std::left << std::setw(52) << "shown to students before the due date"
-        << std::right << std::setw(16) << (fixed2(v.score) + " / " + fixed2(v.max));
-    if (v.extraCredit > 0) out << "   +" << fixed2(v.extraCredit) << " extra credit";
+        << std::right << std::setw(16) << (fixed(v.score, 2) + " / " + fixed(v.max, 2));
+    if (v.extraCredit > 0) out << "   +" << fixed(v.extraCredit, 2) << " extra credit";
     out << "\n";
   }
   for (const TaskBuild& t : report.build.tasks) {

@@ -83,13 +83,37 @@ TEST(Messages, GoogleTestsOwnWordsAreLeftOut) {
     EXPECT_NE(none, nullptr) << "the scene failed";
     ADD_FAILURE() << "added";
     A6_EXPECT_RAN(timedOut);
+    EXPECT_LT(3.5, 2.25) << "the stretch";
+    EXPECT_TRUE(timedOut.ok());
   });
-  ASSERT_EQ(read.size(), 5u);
+  ASSERT_EQ(read.size(), 7u);
   EXPECT_EQ(read[0], "the words after");
   EXPECT_EQ(read[1], "Task 3 (time_stepping.cpp): expected 2 states (a)");
   EXPECT_EQ(read[2], "the scene failed");
   EXPECT_EQ(read[3], "added");
   EXPECT_EQ(read[4], "Task ?: your code failed: your code took longer than 2 s");
+  // A comparison keeps its numbers; a bare one, with no words of its own, keeps GoogleTest's.
+  EXPECT_EQ(read[5].rfind("Expected: (3.5) < (2.25), actual: 3.5 vs 2.25\nthe stretch", 0), 0u)
+      << read[5];
+  EXPECT_NE(read[6].find("timedOut.ok()"), std::string::npos) << read[6];
+}
+
+TEST(Messages, AFailedRunStopsTheCheckEvenInAnUnbracedIf) {
+  harness::SpringForceResult crashed;
+  crashed.fail(harness::Fault::Crashed, "your code crashed");
+  bool after = false, elseRan = false;
+  auto check = [&] {
+    if (true)
+      A6_ASSERT_RAN(crashed);
+    else
+      elseRan = true;  // binds to the outer if: never runs
+    after = true;      // FAIL() returned before this
+  };
+  const std::vector<std::string> read = readAs(check);
+  ASSERT_EQ(read.size(), 1u);
+  EXPECT_EQ(read[0], "Task ?: your code failed: your code crashed");
+  EXPECT_FALSE(after);
+  EXPECT_FALSE(elseRan);
 }
 
 TEST(Messages, AHintIsLeftOutOfACheckWhoseCodeGaveNoAnswer) {

@@ -65,6 +65,7 @@ std::string withoutValueOf(const std::string& message) {
     carried = carried.substr(2, carried.size() - 3);
   std::string rest = message.substr(expected + kTrue.size());
   if (startsWith(rest, "\n")) rest = rest.substr(1);
+  if (carried.empty() && rest.empty()) return message;  // nothing of the check's own to keep
   return carried.empty() ? rest : rest.empty() ? carried : carried + "\n" + rest;
 }
 
@@ -74,10 +75,12 @@ std::string messageOf(const ::testing::TestPartResult& part) {
   std::string message = part.message();
   if (startsWith(message, "Failed\n")) return message.substr(7);
   if (startsWith(message, "Value of: ")) return withoutValueOf(message);
-  // EXPECT_NE and friends: "Expected: (a) != (b), actual: x vs y", then the check's own words.
+  // A pointer checked against null ("Expected: (snapshot) != (nullptr), actual: NULL vs
+  // (nullptr)"), then the check's own words: only those say anything. Other comparisons keep
+  // their line, whose numbers matter.
   const std::size_t line = message.find('\n');
   if (startsWith(message, "Expected: (") && line != std::string::npos &&
-      message.find(", actual: ") < line)
+      message.rfind(" != (nullptr), actual: ", line) != std::string::npos)
     return message.substr(line + 1);
   return message;
 }

@@ -25,7 +25,8 @@ std::string str(const Vec2& v);
 std::string str(const Particle& p);
 
 /// Appended to a failure: what the student should look at. Nothing when the student's code
-/// gave no answer in this check (a hint is written for a wrong answer, not for a crash).
+/// gave no answer in this check (a hint is written for a wrong answer, not for a crash or a
+/// time-out; watched_student.h).
 std::string hint(const std::string& text);
 /// Marks the running check: the student's code gave no answer to one of its requests.
 void noteCodeFailed();
@@ -136,17 +137,22 @@ class ManyInputs {
 #define ASSERT_CLOSE(actual, expected, tol) \
   ASSERT_PRED_FORMAT3(::a6::test::scalarNear, actual, expected, tol)
 
-/// Stops the test when the student's code reported an error (an exception, or in the grader a
-/// crash or timeout), with that error in the message (and no GoogleTest "Value of:" lines: the
-/// student reads it).
-#define A6_ASSERT_RAN(result)         \
-  if ((result).ok()) {                \
-  } else                              \
-    GTEST_FAIL_AT(__FILE__, __LINE__) \
-        << ::a6::test::currentTask() << ": your code failed: " << (result).error
+/// Stops the test (FAIL returns) when the student's code reported an error (an exception, or in
+/// the grader a crash or timeout), with that error in the message and none of GoogleTest's
+/// "Value of:" lines (the student reads it). The switch keeps an `else` after it from binding to
+/// the macro's own `if`, as GoogleTest's macros do.
+#define A6_ASSERT_RAN(result) \
+  switch (0)                  \
+  case 0:                     \
+  default:                    \
+    if ((result).ok()) {      \
+    } else                    \
+      FAIL() << ::a6::test::currentTask() << ": your code failed: " << (result).error
 /// The same, and the test goes on.
-#define A6_EXPECT_RAN(result)          \
-  if ((result).ok()) {                 \
-  } else                               \
-    ADD_FAILURE_AT(__FILE__, __LINE__) \
-        << ::a6::test::currentTask() << ": your code failed: " << (result).error
+#define A6_EXPECT_RAN(result) \
+  switch (0)                  \
+  case 0:                     \
+  default:                    \
+    if ((result).ok()) {      \
+    } else                    \
+      ADD_FAILURE() << ::a6::test::currentTask() << ": your code failed: " << (result).error

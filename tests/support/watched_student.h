@@ -1,5 +1,5 @@
 // The student's code with a witness: every request is passed on unchanged, and when the
-// student's code did not answer (it threw, or in the grader crashed or ran out of time), the
+// student's code did not answer (in the grader: it crashed, ran out of time or was not run), the
 // running check is marked (suite.h: codeFailedInThisCheck), so that its hints, written for wrong
 // answers, stay out of a failure that gave no answer. Takes the student's code to pass requests
 // to; gives its answers unchanged.
@@ -48,7 +48,9 @@ class WatchedStudent final : public harness::StudentCode {
 
 template <class Result>
 Result WatchedStudent::watched(Result result) {
-  if (!result.ok()) noteCodeFailed();
+  // An exception the student's code threw is its answer to this input, which a hint may
+  // explain (an index outside the grid); a crash, a time-out or no run at all is not.
+  if (!result.ok() && result.fault != harness::Fault::Exception) noteCodeFailed();
   return result;
 }
 
