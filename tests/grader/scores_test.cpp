@@ -256,6 +256,10 @@ TEST(Scores, TheStarterGetsNothing) {
   expectCompleted(g);
   if (HasFatalFailure()) return;
   EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), 0) << summary(g);
+  // Its stubs answer nothing like any known mistake (an emitter that puts every particle at the
+  // centre is not one that draws the radius uniformly; a drag that made no joint cannot have
+  // forgotten to destroy it): no mistake may be named, however wrong it is.
+  EXPECT_EQ(mistakesNamed(g.results), std::set<std::string>{});
 }
 
 // As root, the compiler and the probe run as nobody: an output folder nobody may enter (a home

@@ -95,7 +95,8 @@ MistakeModel spreadModel() {
 }
 
 // The share of the sample within half the radius: a quarter when uniform over the disc's area,
-// a half when the radius itself is drawn uniformly (about 0.035 either way at 200 particles).
+// a half when the radius itself is drawn uniformly (about 0.035 either way at 200 particles);
+// every particle at the centre (the starter) is neither.
 MistakeModel discModel() {
   auto judge = [](const Transcript& t) {
     std::vector<Likeness> out;
@@ -107,7 +108,7 @@ MistakeModel discModel() {
         return (p.x - spec.position).norm() < spec.radius / 2;
       });
       const double share = static_cast<double>(inner) / static_cast<double>(ps.size());
-      out.push_back(shows(share > 0.42, share < 0.33));
+      out.push_back(shows(share > 0.42 && share<0.58, share> 0.17 && share < 0.33));
     }
     return out;
   };

@@ -86,14 +86,25 @@ Likeness mouseFrequency(const Box2DResult& r, const JointInfo& j) {
 
 // Drags whose end the answer shows: the world's joint count at the step an end came, against
 // the step before (one fewer), and the caller's pointer after each endDrag (null).
+// How many joints step `step` of the run added (+1) or removed (-1): jointCounts[k] holds the
+// joints after step k, builtJoints those before step 0. 0 where it cannot tell.
+int jointChange(const harness::Box2DResult& r, int step) {
+  const auto s = static_cast<std::size_t>(step);
+  if (step < 0 || s >= r.jointCounts.size()) return 0;
+  const int before = step == 0 ? static_cast<int>(r.builtJoints.size()) : r.jointCounts[s - 1];
+  return r.jointCounts[s] - before;
+}
+// A drag's end where its beginning made a joint: one joint less after it (the stubs of the
+// starter make none, so they neither destroy nor forget one).
 std::vector<Likeness> jointsDestroyed(const Transcript& t) {
   std::vector<Likeness> out;
   for (const auto& x : t.box2d) {
-    const std::vector<int>& counts = x.result.jointCounts;
+    bool made = false;
     for (const DragEvent& e : x.request.drag) {
-      const auto s = static_cast<std::size_t>(e.step);
-      if (e.kind != DragEvent::Kind::End || e.step < 1 || s >= counts.size()) continue;
-      out.push_back(shows(counts[s] == counts[s - 1], counts[s] == counts[s - 1] - 1));
+      if (e.kind == DragEvent::Kind::Begin) made = jointChange(x.result, e.step) == 1;
+      if (e.kind != DragEvent::Kind::End || !made) continue;
+      const int change = jointChange(x.result, e.step);
+      out.push_back(shows(change == 0, change == -1));
     }
   }
   return out;
