@@ -123,6 +123,17 @@ TEST(Messages, AHintIsLeftOutOfACheckWhoseCodeGaveNoAnswer) {
   EXPECT_EQ(hint("check the sign"), "");
 }
 
+TEST(Messages, NoValueIsComparedAfterTheCodeGaveNoAnswer) {
+  noteCodeFailed();
+  const ::testing::AssertionResult r =
+      vecNear("forceOf(r)", "e", "t", Vec2(0, 0), Vec2(-10, 0), Tolerance{20, 1e-5, true});
+  ASSERT_FALSE(r);
+  EXPECT_EQ(std::string(r.message()),
+            "Task ?: the force on p2: not compared (your code gave no answer: see above)");
+  EXPECT_FALSE(scalarNear("x", "e", "t", 1, 1, Tolerance{1, 1e-5, true}))
+      << "even an equal default is not the student's answer";
+}
+
 TEST(Messages, TheNextCheckHasItsHintsAgain) {
   EXPECT_FALSE(codeFailedInThisCheck());
   EXPECT_EQ(hint("check the sign"), "\n  hint: check the sign");

@@ -138,10 +138,20 @@ std::string toleranceText(const Tolerance& tol, const std::string& unit) {
          num(tol.relative) + " of " + num(tol.scale) + unitText(unit) + ")";
 }
 
+// A comparison in a check whose code gave no answer (a crash, a time-out): the value is the
+// result's default, not the student's, so it is not shown. The check's margin is infinite, as for
+// any failure that is not a number (comparisons.h).
+::testing::AssertionResult notCompared(const std::string& what) {
+  currentLog().largestFailingRatio = std::numeric_limits<double>::infinity();
+  return ::testing::AssertionFailure()
+         << currentTask() << ": " << what << ": not compared (your code gave no answer: see above)";
+}
+
 // `what`: the compared quantity in words; `unit`: its unit, or "".
 ::testing::AssertionResult compareVec(const std::string& what, const std::string& unit,
                                       const Vec2& actual, const Vec2& expected,
                                       const Tolerance& tol) {
+  if (codeFailedInThisCheck()) return notCompared(what);
   const Vec2 diff = actual - expected;
   const double largest =
       finite(actual) ? diff.cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
@@ -153,6 +163,7 @@ std::string toleranceText(const Tolerance& tol, const std::string& unit) {
 
 ::testing::AssertionResult compareScalar(const std::string& what, const std::string& unit,
                                          double actual, double expected, const Tolerance& tol) {
+  if (codeFailedInThisCheck()) return notCompared(what);
   const double diff =
       std::isfinite(actual) ? actual - expected : std::numeric_limits<double>::infinity();
   if (recordComparison(std::abs(diff), tol)) return ::testing::AssertionSuccess();
