@@ -19,9 +19,6 @@
 namespace fs = std::filesystem;
 
 namespace a6::grader {
-namespace {
-
-// The names of the checks that failed, in run order.
 std::vector<std::string> failedChecks(const std::vector<TestOutcome>& tests) {
   std::vector<std::string> failed;
   for (const TestOutcome& t : tests) {
@@ -29,6 +26,8 @@ std::vector<std::string> failedChecks(const std::vector<TestOutcome>& tests) {
   }
   return failed;
 }
+
+namespace {
 
 // The reference force models (tasks 1 and 2 solved; in a student release, empty: the student's
 // own). They stay in this process: the probe of tasks 3 and 5 asks for each force over a pipe

@@ -79,6 +79,9 @@ struct ChecksRun {
   std::vector<ParticleTrajectory> particleTrajectories;
 };
 
+/// The names of the checks that failed, in run order.
+std::vector<std::string> failedChecks(const std::vector<TestOutcome>& tests);
+
 /// Runs every registered check against the probes of `input` (registerChecks first).
 ChecksRun runChecks(const ChecksInput& input, const Rubric& rubric);
 

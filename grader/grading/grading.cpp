@@ -354,13 +354,9 @@ void Grading::nameMistakes() {
 // 5. The replays: each imaged scene's run beside the reference's, and the failed checks' runs
 // (task 3's simulations, task 5's particles) beside the reference's, measured for the report.
 void Grading::buildReplays() {
-  std::vector<std::string> failed;
-  for (const TestOutcome& t : report_.tests) {
-    if (!t.passed) failed.push_back(t.name);
-  }
   try {
     report_.replays = grader::buildReplays(sceneRuns_, replayFolder_);
-    for (ReplayView& v : trajectoryReplays(transcript_, failed))
+    for (ReplayView& v : trajectoryReplays(transcript_, failedChecks(report_.tests)))
       report_.replays.push_back(std::move(v));
     for (ReplayView& v : particleTrajectoryReplays(particleTrajectories_))
       report_.replays.push_back(std::move(v));

@@ -141,18 +141,13 @@ class ManyInputs {
 /// the grader a crash or timeout), with that error in the message and none of GoogleTest's
 /// "Value of:" lines (the student reads it). The switch keeps an `else` after it from binding to
 /// the macro's own `if`, as GoogleTest's macros do.
-#define A6_ASSERT_RAN(result) \
-  switch (0)                  \
-  case 0:                     \
-  default:                    \
-    if ((result).ok()) {      \
-    } else                    \
-      FAIL() << ::a6::test::currentTask() << ": your code failed: " << (result).error
+#define A6_ASSERT_RAN(result) A6_RAN_(result, FAIL())
 /// The same, and the test goes on.
-#define A6_EXPECT_RAN(result) \
-  switch (0)                  \
-  case 0:                     \
-  default:                    \
-    if ((result).ok()) {      \
-    } else                    \
-      ADD_FAILURE() << ::a6::test::currentTask() << ": your code failed: " << (result).error
+#define A6_EXPECT_RAN(result) A6_RAN_(result, ADD_FAILURE())
+#define A6_RAN_(result, failure) \
+  switch (0)                     \
+  case 0:                        \
+  default:                       \
+    if ((result).ok()) {         \
+    } else                       \
+      failure << ::a6::test::currentTask() << ": your code failed: " << (result).error
