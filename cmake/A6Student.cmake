@@ -1,14 +1,14 @@
-# Student file sets: the six task files, each compiled as its own object library so that a set
+# Student file sets: the seven task files, each compiled as its own object library so that a set
 # can mix files (a submission with one file missing falls back to the starter's; a wrong
 # version replaces one file of the solution) without recompiling the others.
 
-set(A6_TASK_FILES spring forces time_stepping cloth particle_system joints)
+set(A6_TASK_FILES spring forces time_stepping cloth particle_system joints implicit)
 set(A6_WARNINGS -Wall -Wextra)
 
 # a6_student_set(<name> <dir> [STARTER] [FALLBACK <set>])
 #   Defines the object libraries a6_<name>_<file> for every task file found in <dir>; a file
 #   missing from <dir> is taken from the set FALLBACK (which must exist). Sets
-#   A6_<name>_OBJECTS (in the caller's scope) to the six object libraries of the set.
+#   A6_<name>_OBJECTS (in the caller's scope) to the seven object libraries of the set.
 #   STARTER: the stubs leave parameters unused on purpose; do not warn about that.
 # The headers every task file may use without naming them, precompiled once for all the sets:
 # the same list as the grader kit's (grader/build/build.cmake), so that a file builds here

@@ -15,6 +15,7 @@
 
 #include "a6/cloth.h"
 #include "a6/forces.h"
+#include "a6/implicit.h"
 #include "a6/particle_system.h"
 #include "scenes/scene.h"
 #include "scenes/snapshot.h"
@@ -59,9 +60,12 @@ struct Outcome {
 struct SpringForceRequest {
   Particle p1, p2;
   double restLength = 0, ks = 0, kd = 0;
+  bool jacobians = false;  ///< task 7: springJacobians() instead of computeForce()
 };
 struct SpringForceResult : Outcome {
-  Vec2 force = Vec2::Zero();  ///< on p2, N
+  Vec2 force = Vec2::Zero();  ///< on p2, N (computeForce; zero when jacobians was asked)
+  Mat2 dfdx = Mat2::Zero();   ///< springJacobians().dfdx, N/m (when jacobians was asked)
+  Mat2 dfdv = Mat2::Zero();   ///< springJacobians().dfdv, N·s/m (when jacobians was asked)
 };
 
 // Task 2 ---------------------------------------------------------------------------------------
@@ -84,6 +88,7 @@ struct SimulateRequest {
   double frameDt = 1.0 / 60;  ///< s
   int substeps = 1;           ///< advance(frameDt, substeps) per frame...
   bool stepOnly = false;      ///< ...or, when true, step(frameDt) per frame
+  bool implicit = false;      ///< task 7: stepImplicit in place of step (substeps alike)
   int frames = 1;
   int recordEvery = 1;           ///< record the state after every k-th frame (and the last)
   bool referenceForces = false;  ///< swap in the reference force models (force_model.h)

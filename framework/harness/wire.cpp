@@ -109,6 +109,23 @@ Vec2 toVec(const json& j) {
               within("[1]", [&] { return decodeDouble(j[1]); }));
 }
 
+// Mat2, row by row: [[a00, a01], [a10, a11]] ----------------------------------------------------
+
+json mat(const Mat2& m) {
+  return json::array({vec(m.row(0).transpose()), vec(m.row(1).transpose())});
+}
+
+Mat2 toMat(const json& j) {
+  if (!j.is_array() || j.size() != 2) {
+    throw Malformed(std::string("expected [[a, b], [c, d]], got ") +
+                    (j.is_array() ? "an array of " + std::to_string(j.size()) : j.type_name()));
+  }
+  Mat2 m;
+  m.row(0) = within("[0]", [&] { return toVec(j[0]); }).transpose();
+  m.row(1) = within("[1]", [&] { return toVec(j[1]); }).transpose();
+  return m;
+}
+
 // Lists ------------------------------------------------------------------------------------------
 
 template <typename T, typename Encode>
@@ -168,6 +185,7 @@ json encodeValue(std::uint64_t x) { return x; }
 json encodeValue(bool x) { return x; }
 json encodeValue(const std::string& x) { return x; }
 json encodeValue(const Vec2& x) { return vec(x); }
+json encodeValue(const Mat2& x) { return mat(x); }
 template <typename E, std::enable_if_t<std::is_enum_v<E>, int> = 0>
 json encodeValue(E x) {
   return enumName(x, namesOf(x));
@@ -214,6 +232,7 @@ void decodeValue(const json& j, std::string& x) {
   x = j.get<std::string>();
 }
 void decodeValue(const json& j, Vec2& x) { x = toVec(j); }
+void decodeValue(const json& j, Mat2& x) { x = toMat(j); }
 template <typename E, std::enable_if_t<std::is_enum_v<E>, int> = 0>
 void decodeValue(const json& j, E& x) {
   x = enumValue(j, namesOf(x));

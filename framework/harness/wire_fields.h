@@ -84,6 +84,7 @@ void fields(V& v, SceneParams& p) {
   v("ks", p.ks), v("kd", p.kd), v("substeps", p.substeps), v("n", p.n), v("dt", p.dt);
   v("gravity", p.gravity), v("drag", p.drag), v("buoyancy", p.buoyancy);
   v("structural", p.structural), v("shear", p.shear), v("bending", p.bending), v("seed", p.seed);
+  v("implicit", p.implicit);
 }
 template <class V>
 void fields(V& v, ShapeData& s) {
@@ -140,6 +141,7 @@ void fields(V& v, harness::JointInfo& i) {
 template <class V>
 void fields(V& v, harness::SpringForceRequest& r) {
   v("p1", r.p1), v("p2", r.p2), v("restLength", r.restLength), v("ks", r.ks), v("kd", r.kd);
+  v("jacobians", r.jacobians);
 }
 template <class V>
 void fields(V& v, harness::ForcesRequest& r) {
@@ -149,7 +151,7 @@ template <class V>
 void fields(V& v, harness::SimulateRequest& r) {
   v("particles", r.particles), v("springs", r.springs), v("env", r.env);
   v("frameDt", r.frameDt), v("substeps", r.substeps), v("stepOnly", r.stepOnly);
-  v("frames", r.frames), v("recordEvery", r.recordEvery);
+  v("implicit", r.implicit), v("frames", r.frames), v("recordEvery", r.recordEvery);
   v("referenceForces", r.referenceForces);
 }
 template <class V>
@@ -176,7 +178,7 @@ void fields(V& v, harness::SceneRequest& r) {
 
 template <class V>
 void fields(V& v, harness::SpringForceResult& r) {
-  v("force", r.force);
+  v("force", r.force), v("dfdx", r.dfdx), v("dfdv", r.dfdv);
 }
 template <class V>
 void fields(V& v, harness::ForcesResult& r) {

@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include "harness/task_files.h"
+
 namespace a6::golden {
 namespace {
 
@@ -62,7 +64,7 @@ GoldenImage fromJson(const Json& j) {
     throw std::runtime_error("tolerance.maxFraction must be in [0, 1]");
   }
   if (g.tolerance.block < 1) throw std::runtime_error("tolerance.block must be >= 1");
-  if (g.task < 1 || g.task > 6) throw std::runtime_error("task must be 1..6");
+  if (g.task < 1 || g.task > kTaskCount) throw std::runtime_error("task must be 1..7");
   if (!g.exercises(g.task)) throw std::runtime_error("tasks must include task");
   if (g.baselines.empty()) throw std::runtime_error("no baselines");
   return g;
@@ -173,12 +175,6 @@ std::string writeManifest(const Manifest& manifest, const std::string& path) {
   out.close();
   if (!out) return "cannot write the golden-image manifest " + path;
   return "";
-}
-
-const char* taskFile(int t) {
-  static const char* const files[] = {"spring.cpp", "forces.cpp",          "time_stepping.cpp",
-                                      "cloth.cpp",  "particle_system.cpp", "joints.cpp"};
-  return t >= 1 && t <= 6 ? files[t - 1] : "";
 }
 
 std::string describeTasks(const GoldenImage& image) {

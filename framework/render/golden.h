@@ -78,8 +78,6 @@ ManifestResult readManifest(const std::string& path);
 /// Writes `manifest` as JSON (2-space indent, keys in the documented order). Empty on success.
 [[nodiscard]] std::string writeManifest(const Manifest& manifest, const std::string& path);
 
-/// The task file of task t (1-6): "spring.cpp", ..., "joints.cpp"; "" otherwise.
-const char* taskFile(int t);
 /// "task 4 (cloth.cpp)" for the image's own task, with "on top of task 1 (spring.cpp), ..." for
 /// the others it runs.
 std::string describeTasks(const GoldenImage& image);

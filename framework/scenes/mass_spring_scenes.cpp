@@ -159,7 +159,11 @@ class MassSpringScene final : public Scene {
     }
   }
 
-  void stepFrame() override { system_.advance(params().dt, params().substeps); }
+  void stepFrame() override {
+    const SceneParams& p = params();
+    if (!p.implicit) return system_.advance(p.dt, p.substeps);
+    for (int k = 0; k < p.substeps; ++k) system_.stepImplicit(p.dt / p.substeps);
+  }
 
  private:
   MassSpringDef def_;
@@ -180,7 +184,7 @@ Environment baseEnvironment(const SceneParams& p) {
 
 // The flags of the mass-spring sliders.
 constexpr unsigned kMassSpringUses =
-    kUsesKs | kUsesKd | kUsesSubsteps | kUsesDt | kUsesGravity | kUsesDrag;
+    kUsesKs | kUsesKd | kUsesSubsteps | kUsesDt | kUsesGravity | kUsesDrag | kUsesIntegrator;
 
 // single_spring -------------------------------------------------------------------------------
 // A 1 kg mass on one 100 N/m spring (ω = 10 rad/s, period 0.63 s) hanging from a pinned
@@ -356,11 +360,12 @@ SceneParams clothParams(bool shear, bool bending) {
   return p;
 }
 
-SceneParams stiffClothParams(int substeps) {
+SceneParams stiffClothParams(int substeps, bool implicit = false) {
   SceneParams p = clothParams(true, false);
   p.ks = stiff_cloth::kKs;
   p.kd = stiff_cloth::kKd;
   p.substeps = substeps;
+  p.implicit = implicit;
   return p;
 }
 
@@ -452,6 +457,12 @@ void scene_registry::addMassSpringScenes(std::vector<Entry>& out) {
                        "smaller and the cloth holds.",
                        3, kClothUses},
                       stiffClothParams(10), cloth::def(kClothParticleMass)));
+  out.push_back(entry({"stiff_cloth_implicit", "Stiff cloth, implicit Euler",
+                       "The same stiff cloth in ONE implicit Euler step per frame (task 7): "
+                       "backward Euler is stable at any ω h, and damps the fastest modes. "
+                       "Switch the integrator to compare it with stiff_cloth_1.",
+                       7, kClothUses},
+                      stiffClothParams(1, true), cloth::def(kClothParticleMass)));
 }
 
 }  // namespace a6

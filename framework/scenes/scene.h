@@ -6,7 +6,8 @@
 //   single_spring, hanging_chain      springs (task 1), forces (task 2), time stepping (task 3)
 //   cloth_structural/_shear/_bending  the cloth builder (task 4) on top of tasks 1-3
 //   stiff_cloth_1, stiff_cloth_10     the same stiff cloth with 1 and with 10 substeps
-//   soft_body                         a soft ball on obstacles: repulsion (task 2) and task 3
+//   stiff_cloth_implicit              the same stiff cloth, one implicit Euler step per frame (task
+//   7) soft_body                         a soft ball on obstacles: repulsion (task 2) and task 3
 //   fire                              the particle system (task 5)
 //   pendulum, rope, bridge, piston, car, mouse_drag   Box2D joints (task 6)
 //
@@ -47,6 +48,8 @@ struct SceneParams {
   bool shear = false;      ///< cloth: add shear springs
   bool bending = false;    ///< cloth: add bending springs
   std::uint64_t seed = 1;  ///< seed of the scene's random generator (particle systems)
+  bool implicit = false;   ///< mass-spring scenes: task 7's stepImplicit in place of task 3's
+                           ///< step (symplectic Euler), `substeps` steps per frame alike
 };
 
 /// Which SceneParams fields a scene uses, as bits of SceneInfo::uses.
@@ -61,6 +64,7 @@ enum SceneParamBit : unsigned {
   kUsesBuoyancy = 1u << 7,
   kUsesSpringTypes = 1u << 8,  ///< structural / shear / bending toggles
   kUsesSeed = 1u << 9,
+  kUsesIntegrator = 1u << 10,  ///< the integrator switch (symplectic / implicit)
 };
 
 /// What the scene list shows.
@@ -68,7 +72,7 @@ struct SceneInfo {
   std::string name;         ///< registry name, e.g. "cloth_shear"
   std::string title;        ///< short title for a menu, e.g. "Cloth: + shear springs"
   std::string description;  ///< one or two sentences: what to look at
-  int task = 0;             ///< the task (1-6) whose code the scene shows off most
+  int task = 0;             ///< the task (1-7) whose code the scene shows off most
   unsigned uses = 0;        ///< SceneParamBit flags
 };
 
@@ -130,7 +134,7 @@ class Scene {
   int frame_ = 0;
 };
 
-/// Every registered scene, in teaching order (tasks 1 to 6).
+/// Every registered scene, in teaching order (tasks 1 to 7).
 const std::vector<std::string>& sceneNames();
 /// The scene list entry of `name`; nullptr for an unknown name.
 const SceneInfo* sceneInfo(const std::string& name);

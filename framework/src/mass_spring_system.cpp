@@ -1,8 +1,10 @@
-// The framework's part of the mass-spring system; step() and advance() are task 3.
+// The framework's part of the mass-spring system; step() and advance() are task 3, stepImplicit()
+// task 7.
 #include "a6/mass_spring_system.h"
 
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 namespace a6 {
 
@@ -70,6 +72,20 @@ int MassSpringSystem::indexOf(const Particle* p) const {
     if (&particles[i] == p) return static_cast<int>(i);
   }
   return -1;
+}
+
+std::vector<std::array<int, 2>> MassSpringSystem::springEnds() const {
+  std::unordered_map<const Particle*, int> index;
+  index.reserve(particles.size());
+  for (std::size_t i = 0; i < particles.size(); ++i) index[&particles[i]] = static_cast<int>(i);
+  const auto find = [&](const Particle* p) {
+    const auto it = index.find(p);
+    return it == index.end() ? -1 : it->second;
+  };
+  std::vector<std::array<int, 2>> ends;
+  ends.reserve(springs.size());
+  for (const Spring& s : springs) ends.push_back({find(s.p1), find(s.p2)});
+  return ends;
 }
 
 }  // namespace a6

@@ -51,7 +51,7 @@ bool sameParams(const SceneParams& a, const SceneParams& b) {
   return a.ks == b.ks && a.kd == b.kd && a.substeps == b.substeps && a.n == b.n && a.dt == b.dt &&
          a.gravity == b.gravity && a.drag == b.drag && a.buoyancy == b.buoyancy &&
          a.structural == b.structural && a.shear == b.shear && a.bending == b.bending &&
-         a.seed == b.seed;
+         a.seed == b.seed && a.implicit == b.implicit;
 }
 
 ImVec4 toImGui(Rgba c) { return ImVec4(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f); }
@@ -474,6 +474,20 @@ void Viewer::parameterSection() {
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("Steps per frame: each step is dt / substeps. Stiff springs need more.");
     }
+  }
+  if (uses & kUsesIntegrator) {
+    // Task 7: switch the running scene between task 3's step and task 7's stepImplicit, and
+    // watch the energy plot: symplectic Euler keeps it (or explodes), implicit Euler damps it.
+    int integrator = p.implicit ? 1 : 0;
+    ImGui::Text("Integrator:");
+    ImGui::SameLine();
+    ImGui::RadioButton("symplectic (task 3)", &integrator, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("implicit (task 7)", &integrator, 1);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("stepImplicit: one backward Euler step per substep, stable at any dt");
+    }
+    p.implicit = integrator == 1;
   }
   if (uses & kUsesDt) {
     sliderDouble("dt (s)", &p.dt, 0.001, 0.1, "%.4f", true,

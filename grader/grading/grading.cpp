@@ -342,7 +342,7 @@ void Grading::nameMistakes() {
   std::set<int> failing;
   for (const TestOutcome& t : report_.tests) {
     const int task = t.name.rfind("Task", 0) == 0 && t.name.size() > 4 ? t.name[4] - '0' : 0;
-    if (!t.passed && task >= 1 && task <= 6) failing.insert(task);
+    if (!t.passed && task >= 1 && task <= kTaskCount) failing.insert(task);
   }
   try {
     report_.mistakes = grader::nameMistakes(transcript_, mistakeLibrary(), failing);

@@ -1,4 +1,4 @@
-# Intake (intake/): a submission (a folder, an archive, one file) to the six task files it holds.
+# Intake (intake/): a submission (a folder, an archive, one file) to the task files it holds.
 # Gives a6_intake.
 find_package(LibArchive 3 REQUIRED)
 

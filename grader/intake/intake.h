@@ -1,4 +1,4 @@
-// Taking a submission in: a folder, a zip or a tarball (libarchive). Only the six task files are
+// Taking a submission in: a folder, a zip or a tarball (libarchive). Only the task files are
 // taken, by name, wherever they sit; everything else is ignored. Nothing is ever written outside
 // `dest`.
 #pragma once
@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "harness/task_files.h"
+
 namespace a6::grader {
 
-/// The six task files, in task order.
-inline const std::vector<std::string> kTaskFiles = {"spring.cpp",          "forces.cpp",
-                                                    "time_stepping.cpp",   "cloth.cpp",
-                                                    "particle_system.cpp", "joints.cpp"};
+/// The task files, in task order (harness/task_files.h).
+using a6::kTaskFiles;
 
 struct Intake {
   std::string error;  ///< non-empty when the submission could not be read at all

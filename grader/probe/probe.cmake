@@ -20,14 +20,14 @@ foreach(main a6_probe_main a6_probe_main_models)
   target_compile_options(${main} PRIVATE ${A6_WARNINGS})
 endforeach()
 
-# The kit: everything a probe links besides its main and the six student objects.
+# The kit: everything a probe links besides its main and the seven student objects.
 add_library(a6_probe_kit STATIC $<TARGET_OBJECTS:a6_framework> $<TARGET_OBJECTS:a6_core>
                                 $<TARGET_OBJECTS:a6_wire>)
 set_target_properties(a6_probe_kit PROPERTIES LINKER_LANGUAGE CXX)
 target_link_libraries(a6_probe_kit INTERFACE a6_harness_api box2d::box2d)
 
 # How a submission's probe is linked (what grader/build/build.cpp runs, in the sandbox):
-#   <compiler> -o <probe> <A6_PROBE_LINK_MAIN> <the six task objects> <A6_PROBE_LINK_LIBRARIES>
+#   <compiler> -o <probe> <A6_PROBE_LINK_MAIN> <the seven task objects> <A6_PROBE_LINK_LIBRARIES>
 # For build/build.cmake (read after this file) and for the tests' hostile probes.
 set(A6_PROBE_LINK_COMPILER ${CMAKE_CXX_COMPILER})
 set(A6_PROBE_LINK_MAIN "$<TARGET_OBJECTS:a6_probe_main>")
@@ -39,12 +39,13 @@ set(A6_PROBE_EXTRA_LINK "")  # what kit.json adds after box2d: nothing (no libse
 list(JOIN A6_PROBE_LINK_LIBRARIES " " _a6_probe_libs)
 file(GENERATE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/probe_link.txt CONTENT
 "# How a submission's probe is linked (grader/cmake/probe.cmake): the compiler, then -o and the
-# probe's path, then the probe main object, then the six task objects in task order (spring,
-# forces, time_stepping, cloth, particle_system, joints), then the libraries, in this order.
+# probe's path, then the probe main object, then the seven task objects in task order (spring,
+# forces, time_stepping, cloth, particle_system, joints, implicit), then the libraries, in this
+# order.
 compiler=${CMAKE_CXX_COMPILER}
 main=${A6_PROBE_LINK_MAIN}
 libraries=${_a6_probe_libs}
-line=${CMAKE_CXX_COMPILER} -o PROBE ${A6_PROBE_LINK_MAIN} SPRING.o FORCES.o TIME_STEPPING.o CLOTH.o PARTICLE_SYSTEM.o JOINTS.o ${_a6_probe_libs}
+line=${CMAKE_CXX_COMPILER} -o PROBE ${A6_PROBE_LINK_MAIN} SPRING.o FORCES.o TIME_STEPPING.o CLOTH.o PARTICLE_SYSTEM.o JOINTS.o IMPLICIT.o ${_a6_probe_libs}
 ")
 unset(_a6_probe_libs)
 

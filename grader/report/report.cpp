@@ -49,7 +49,7 @@ const TaskBuild* buildOf(const GradeReport& report, int task) {
   return nullptr;
 }
 
-// 1..6 for a task file name, 0 otherwise.
+// 1..7 for a task file name, 0 otherwise.
 int taskOf(const std::string& file) {
   for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {
     if (kTaskFiles[i] == file) return static_cast<int>(i + 1);

@@ -195,12 +195,12 @@ const std::vector<std::string> kItemKeys = {"name",       "task",           "tes
                                             "points",     "all_or_nothing", "extra_credit",
                                             "visibility", "time_limit"};
 
-// An item's `task`: 1..6, or 0 for none.
+// An item's `task`: 1..7 (7: the extra-credit implicit Euler), or 0 for none.
 void parseTask(const toml::node& node, int line, const std::string& where, Checker& check,
                RubricItem& item) {
   long long task = 0;
   if (check.integer(node, where, task)) {
-    if (task < 0 || task > 6) check.error(line, where + " must be 1..6, or 0 for none");
+    if (task < 0 || task > 7) check.error(line, where + " must be 1..7, or 0 for none");
     item.task = static_cast<int>(task);
   }
 }

@@ -11,7 +11,7 @@
 //
 //   [[item]]
 //   name = "Task 1: spring force"
-//   task = 1                    # 1..6, or 0 for none
+//   task = 1                    # 1..7, or 0 for none
 //   tests = "Task1Spring.*"     # a glob over "Suite.Test", or a list of globs
 //   points = 15
 //   all_or_nothing = false      # optional
@@ -36,7 +36,7 @@ const char* toString(Visibility v);  ///< Gradescope's names: visible, hidden, a
 /// and ?) and no earlier item share `points`, split evenly, or all-or-nothing when `allOrNothing`.
 struct RubricItem {
   std::string name;                ///< shown in reports, e.g. "Task 1: spring force"
-  int task = 0;                    ///< 1..6, or 0 for none
+  int task = 0;                    ///< 1..7, or 0 for none
   std::vector<std::string> tests;  ///< globs over "Suite.Test"; a test matching any of them
   double points = 0;
   bool allOrNothing = false;

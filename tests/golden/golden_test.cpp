@@ -39,6 +39,7 @@
 #include "contexts/gl_context.h"
 #include "golden_checks.h"
 #include "golden_suite.h"
+#include "harness/task_files.h"
 #include "render/renderer.h"
 
 #ifndef A6_GOLDEN_DIR
@@ -172,7 +173,7 @@ std::string header(const GoldenImage& image) {
 std::vector<int> failingEarlierTasks(const GoldenImage& image) {
   std::vector<int> out;
   const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
-  for (int t = 1; t <= 6; ++t) {
+  for (int t = 1; t <= kTaskCount; ++t) {
     if (t == image.task || !image.exercises(t)) continue;
     const std::string prefix = "Task" + std::to_string(t);
     for (int k = 0; k < unit.total_test_suite_count(); ++k) {
@@ -431,7 +432,7 @@ std::set<int> parseTasks(const std::string& text) {
   std::string item;
   while (std::getline(in, item, ',')) {
     const int t = std::atoi(item.c_str());
-    if (t >= 1 && t <= 6) tasks.insert(t);
+    if (t >= 1 && t <= kTaskCount) tasks.insert(t);
   }
   return tasks;
 }

@@ -1,16 +1,16 @@
 cmake_minimum_required(VERSION 3.22)
 # Links a probe exactly as the grader links a submission's, from BUILD/grader/probe_link.txt:
-#   cmake -DLINK_FILE=<probe_link.txt> -DPROBE=<output> -DOBJECTS=<six objects, |-separated,
+#   cmake -DLINK_FILE=<probe_link.txt> -DPROBE=<output> -DOBJECTS=<seven objects, |-separated,
 #         task order> -P link_probe.cmake
 file(STRINGS ${LINK_FILE} line REGEX "^line=")
 string(REGEX REPLACE "^line=" "" line "${line}")
 separate_arguments(args UNIX_COMMAND "${line}")
 string(REPLACE "|" ";" objects "${OBJECTS}")
 list(LENGTH objects count)
-if(NOT count EQUAL 6)
-  message(FATAL_ERROR "link_probe.cmake: expected six objects, got ${count}: ${OBJECTS}")
+if(NOT count EQUAL 7)
+  message(FATAL_ERROR "link_probe.cmake: expected seven objects, got ${count}: ${OBJECTS}")
 endif()
-set(placeholders SPRING.o FORCES.o TIME_STEPPING.o CLOTH.o PARTICLE_SYSTEM.o JOINTS.o)
+set(placeholders SPRING.o FORCES.o TIME_STEPPING.o CLOTH.o PARTICLE_SYSTEM.o JOINTS.o IMPLICIT.o)
 set(command "")
 foreach(arg IN LISTS args)
   list(FIND placeholders "${arg}" index)

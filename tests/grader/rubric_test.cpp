@@ -191,7 +191,7 @@ TEST(RubricErrors, RequiredKeysAreNamed) {
 
 TEST(RubricErrors, OutOfRangeValuesAreRefused) {
   const std::string base = "total = 5\n[[item]]\nname = \"a\"\ntests = \"A.*\"\npoints = 5\n";
-  EXPECT_NE(errorOf(base + "task = 7\n").find("'task' of [[item]] 1 must be 1..6, or 0"),
+  EXPECT_NE(errorOf(base + "task = 8\n").find("'task' of [[item]] 1 must be 1..7, or 0"),
             std::string::npos);
   EXPECT_NE(errorOf(base + "time_limit = 0\n")
                 .find("'time_limit' of [[item]] 1 must be more "

@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include "harness/task_files.h"
+
 #ifndef A6_SOURCE_DIR
 #error "define A6_SOURCE_DIR (the repository) to include staging.h"
 #endif
@@ -33,9 +35,7 @@ namespace a6::test::staging {
 
 namespace fs = std::filesystem;
 
-inline const std::vector<std::string> kTaskFiles = {"spring.cpp",          "forces.cpp",
-                                                    "time_stepping.cpp",   "cloth.cpp",
-                                                    "particle_system.cpp", "joints.cpp"};
+using a6::kTaskFiles;  // harness/task_files.h
 inline const fs::path kSource = A6_SOURCE_DIR;
 inline const fs::path kFixtures = kSource / "tests" / "grader" / "submissions";
 

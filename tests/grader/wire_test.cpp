@@ -83,6 +83,10 @@ struct Fill {
   void operator()(const char*, bool& x) { x = !x; }  // never its default
   void operator()(const char*, std::string& x) { x = f.text(); }
   void operator()(const char*, Vec2& x) { x = f.vec(); }
+  void operator()(const char*, Mat2& x) {
+    x.row(0) = f.vec().transpose();
+    x.row(1) = f.vec().transpose();
+  }
   template <typename E, std::enable_if_t<std::is_enum_v<E>, int> = 0>
   void operator()(const char*, E& x) {
     const auto& names = wire::namesOf(x);  // the value after its default
@@ -116,6 +120,10 @@ struct Leaves {
   void operator()(const char* name, const std::string& x) { leaf(name, x); }
   void operator()(const char* name, const Vec2& x) {
     leaf(name, std::to_string(bits(x.x())) + " " + std::to_string(bits(x.y())));
+  }
+  void operator()(const char* name, const Mat2& x) {
+    leaf(name, std::to_string(bits(x(0, 0))) + " " + std::to_string(bits(x(0, 1))) + " " +
+                   std::to_string(bits(x(1, 0))) + " " + std::to_string(bits(x(1, 1))));
   }
   template <typename E, std::enable_if_t<std::is_enum_v<E>, int> = 0>
   void operator()(const char* name, E x) {

@@ -94,18 +94,18 @@ if ! grep -q 'Build files have been written' "$work/test.log" || ! grep -q 'test
   fail "scripts/test.sh did not build and run the tests"
 fi
 [ "$test_status" -ne 0 ] || fail "scripts/test.sh passed on the starter: its tests must fail"
-# The whole suite's summary (the per-task entries Task1..Task6 print one each too): the line
+# The whole suite's summary (the per-task entries Task1..Task7 print one each too): the line
 # with the most failing tasks.
 summary=$(grep '^A6-SUMMARY' "$work/test.log" | awk '{n = 0; for (i = 2; i <= NF; i++) {
   split($i, a, ":"); if (a[3] > 0) n++ } if (n > best) { best = n; line = $0 } } END { print line }')
 if [ -z "$summary" ]; then
   fail "the physics tests printed no per-task summary"
 else
-  for t in 1 2 3 4 5 6; do
+  for t in 1 2 3 4 5 6 7; do
     failed=$(echo "$summary" | tr ' ' '\n' | grep "^$t:" | cut -d: -f3)
     [ "${failed:-0}" -gt 0 ] || fail "task $t: no failing test on the starter ($summary)"
   done
-  [ "$(grep -c 'look here' "$work/test.log")" -ge 6 ] || fail "the summary does not point at every task"
+  [ "$(grep -c 'look here' "$work/test.log")" -ge 7 ] || fail "the summary does not point at every task"
   pass "scripts/test.sh fails clearly on the starter: $summary"
 fi
 grep -q 'Failed.*physics' "$work/test.log" || grep -q 'physics.*Failed' "$work/test.log" ||

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "comparisons.h"
+#include "harness/task_files.h"
 #include "quantities.h"
 
 namespace a6::test {
@@ -11,11 +12,8 @@ namespace a6::test {
 std::string currentTask() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string suite = info != nullptr ? info->test_suite_name() : "";
-  static const char* const files[] = {"spring.cpp", "forces.cpp",          "time_stepping.cpp",
-                                      "cloth.cpp",  "particle_system.cpp", "joints.cpp"};
-  if (suite.size() >= 5 && suite.compare(0, 4, "Task") == 0 && suite[4] >= '1' && suite[4] <= '6') {
-    return std::string("Task ") + suite[4] + " (" + files[suite[4] - '1'] + ")";
-  }
+  const int task = suite.size() >= 5 && suite.compare(0, 4, "Task") == 0 ? suite[4] - '0' : 0;
+  if (!taskFile(task).empty()) return "Task " + std::to_string(task) + " (" + taskFile(task) + ")";
   return "Task ?";
 }
 

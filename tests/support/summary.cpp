@@ -29,7 +29,7 @@ void TaskSummary::OnTestEnd(const ::testing::TestInfo& info) {
   const std::string suite = info.test_suite_name();
   if (suite.size() < 5 || suite.compare(0, 4, "Task") != 0) return;
   const int task = suite[4] - '1';
-  if (task < 0 || task >= 6 || info.result()->Skipped()) return;
+  if (task < 0 || task >= kTaskCount || info.result()->Skipped()) return;
   const ComparisonLog log = comparisonsOf(info);
   if (info.result()->Passed()) {
     ++passed_[task];
@@ -48,9 +48,9 @@ void TaskSummary::OnTestEnd(const ::testing::TestInfo& info) {
 
 namespace {
 
-void printLine(const char* key, const std::array<double, 6>& values) {
+void printLine(const char* key, const std::array<double, kTaskCount>& values) {
   std::string line = key;
-  for (int t = 0; t < 6; ++t) {
+  for (int t = 0; t < kTaskCount; ++t) {
     line += " " + std::to_string(t + 1) + ":" + (std::isnan(values[t]) ? "none" : num(values[t]));
   }
   std::printf("%s\n", line.c_str());
@@ -59,20 +59,18 @@ void printLine(const char* key, const std::array<double, 6>& values) {
 }  // namespace
 
 void TaskSummary::OnTestProgramEnd(const ::testing::UnitTest&) {
-  static const char* const files[] = {"spring.cpp", "forces.cpp",          "time_stepping.cpp",
-                                      "cloth.cpp",  "particle_system.cpp", "joints.cpp"};
   int passed = 0, failed = 0;
   std::printf("\nSummary by task\n");
-  for (int t = 0; t < 6; ++t) {
-    std::printf("  Task %d  %-20s %3d passed, %3d failed%s\n", t + 1, files[t], passed_[t],
-                failed_[t], failed_[t] > 0 ? "   <-- look here" : "");
+  for (int t = 0; t < kTaskCount; ++t) {
+    std::printf("  Task %d  %-20s %3d passed, %3d failed%s\n", t + 1, taskFile(t + 1).c_str(),
+                passed_[t], failed_[t], failed_[t] > 0 ? "   <-- look here" : "");
     passed += passed_[t];
     failed += failed_[t];
   }
   // Machine-readable lines for the checks: task:passed:failed ..., then the numbers of
   // comparisons.h per task.
   std::printf("A6-SUMMARY");
-  for (int t = 0; t < 6; ++t) std::printf(" %d:%d:%d", t + 1, passed_[t], failed_[t]);
+  for (int t = 0; t < kTaskCount; ++t) std::printf(" %d:%d:%d", t + 1, passed_[t], failed_[t]);
   std::printf("\n");
   if (marginsWanted()) {
     printLine("A6-MARGIN", margin_);

@@ -1,6 +1,6 @@
 // The per-task summary every physics-suite main prints at the end: a table for people and
 // machine-readable lines for the checks (tests/check_run.cmake):
-//   A6-SUMMARY 1:<passed>:<failed> 2:<passed>:<failed> ... 6:<passed>:<failed>
+//   A6-SUMMARY 1:<passed>:<failed> 2:<passed>:<failed> ... 7:<passed>:<failed>
 // and, when the environment has A6_MARGINS=1 (the fairness checks), the numbers of comparisons.h:
 //   A6-CHECK-MARGIN <check> <margin>                                (each failed check)
 //   A6-MARGIN 1:<smallest margin of a failed check, or none> ...   (comparisons.h)
@@ -13,6 +13,8 @@
 
 #include <array>
 
+#include "harness/task_files.h"
+
 namespace a6::test {
 
 class TaskSummary : public ::testing::EmptyTestEventListener {
@@ -24,8 +26,8 @@ class TaskSummary : public ::testing::EmptyTestEventListener {
 
  private:
   bool pointToTasks_ = false;
-  std::array<int, 6> passed_{}, failed_{};
-  std::array<double, 6> margin_{}, closest_{}, agreement_{};
+  std::array<int, kTaskCount> passed_{}, failed_{};
+  std::array<double, kTaskCount> margin_{}, closest_{}, agreement_{};
 };
 
 }  // namespace a6::test

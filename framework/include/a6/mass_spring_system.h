@@ -1,6 +1,7 @@
 // Task 3: the mass-spring system and its time stepping (slides "Time stepping", "Instability").
 #pragma once
 
+#include <array>
 #include <deque>
 #include <vector>
 
@@ -37,6 +38,14 @@ class MassSpringSystem {
   /// step(frameDt / substeps). substeps >= 1.
   void advance(double frameDt, int substeps);
 
+  /// TASK 7 (implicit.cpp, extra credit). One linearised backward Euler step of dt seconds
+  /// (a6/implicit.h): the forces as in step(), then A Δv = b with
+  ///   A = M - dt ∂f/∂v - dt² ∂f/∂x,   b = dt (f + dt ∂f/∂x v),
+  /// assembled from every spring's springJacobians() and solved with ImplicitSystem; pinned
+  /// particles are fixed (Δv = 0); then, for every particle that is not pinned, v += Δv and
+  /// x += v dt (with the new v). External forces stay explicit (their Jacobians are left out).
+  void stepImplicit(double dt);
+
   /// The external force on p (gravity, buoyancy, drag, collisions): your externalForce(p, env)
   /// unless a test has swapped in a reference model (see force_model.h). N, world frame.
   Vec2 externalForce(const Particle& p) const;
@@ -50,6 +59,9 @@ class MassSpringSystem {
   double gravityEnergy() const;
   /// The index of a particle of this system, or -1.
   int indexOf(const Particle* p) const;
+  /// The indices of every spring's p1 and p2 in `particles`, in the order of `springs` (-1 for
+  /// a particle that is not in this system): what task 7's assembly needs, in O(n) for all.
+  std::vector<std::array<int, 2>> springEnds() const;
 
  private:
   ForceModel forceModel_;

@@ -1,0 +1,515 @@
+// Task 7 (extra credit) — springJacobians and MassSpringSystem::stepImplicit. Oracles: Jacobians
+// computed by hand, central finite differences of your own task 1 force, the closed form of
+// backward Euler for a linear spring, its exact energy loss per step, and the limit of tiny steps.
+//
+// The steps set referenceForces, so a bug in task 1 or 2 never fails these checks; the Jacobians
+// are your own (task 7's).
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "suite.h"
+
+namespace a6::test {
+namespace {
+
+using harness::SimulateRequest;
+using harness::SimulateResult;
+using harness::SpringData;
+using harness::SpringForceRequest;
+using harness::SpringForceResult;
+
+// --- Springs and their Jacobians -------------------------------------------------------------
+
+Particle at(Vec2 x, Vec2 v = Vec2::Zero()) {
+  Particle p;
+  p.x = x;
+  p.v = v;
+  return p;
+}
+
+SpringForceRequest springOf(Vec2 x1, Vec2 x2, double restLength, double ks, double kd = 0,
+                            Vec2 v1 = Vec2::Zero(), Vec2 v2 = Vec2::Zero()) {
+  SpringForceRequest r;
+  r.p1 = at(x1, v1);
+  r.p2 = at(x2, v2);
+  r.restLength = restLength;
+  r.ks = ks;
+  r.kd = kd;
+  return r;
+}
+
+std::string input(const SpringForceRequest& r) {
+  return "  input: x1=" + str(r.p1.x) + ", x2=" + str(r.p2.x) + ", v1=" + str(r.p1.v) +
+         ", v2=" + str(r.p2.v) + ", l0=" + num(r.restLength) + ", ks=" + num(r.ks) +
+         ", kd=" + num(r.kd);
+}
+
+std::string matrix(const Mat2& m) {
+  return "[[" + num(m(0, 0)) + ", " + num(m(0, 1)) + "], [" + num(m(1, 0)) + ", " + num(m(1, 1)) +
+         "]]";
+}
+
+SpringForceResult jacobiansOf(SpringForceRequest r) {
+  r.jacobians = true;
+  return student().springForce(r);
+}
+
+// |actual - hand| <= tol entry by entry; the message names the matrix, both values and the input.
+::testing::AssertionResult sameMatrix(const char* what, const Mat2& actual, const Mat2& hand,
+                                      double scale, const SpringForceRequest& r) {
+  const double tol = std::max(scale, 1e-300) * kOneComputation;
+  if (((actual - hand).array().abs() <= tol).all()) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << currentTask() << ": " << what << " is " << matrix(actual)
+                                       << ", the hand-computed value is " << matrix(hand) << "\n"
+                                       << input(r);
+}
+
+constexpr char kSignHint[] =
+    "dfdx = -ks (e eᵀ + (1 - l0/l)(I - e eᵀ)): along the spring its stiffness is -ks, across it "
+    "-ks (1 - l0/l); dfdv = -kd e eᵀ. Both are NEGATIVE: a spring pulls back";
+
+// Runs the Jacobians of r and compares them with hand-computed values.
+void expectJacobians(const SpringForceRequest& r, const Mat2& dfdx, const Mat2& dfdv,
+                     const std::string& hintText) {
+  const SpringForceResult j = jacobiansOf(r);
+  A6_ASSERT_RAN(j) << "\n" << input(r);
+  EXPECT_TRUE(sameMatrix("dfdx", j.dfdx, dfdx, r.ks, r)) << hint(hintText);
+  EXPECT_TRUE(sameMatrix("dfdv", j.dfdv, dfdv, r.kd, r)) << hint(hintText);
+}
+
+TEST(Task7Implicit, JacobianOfAStretchedSpringAlongX) {
+  // l = 1.5, l0 = 1: along x the stiffness is -ks, across it -ks (1 - 1/1.5) = -ks / 3.
+  const SpringForceRequest r = springOf(Vec2(0, 0), Vec2(1.5, 0), 1.0, 90);
+  Mat2 dfdx;
+  dfdx << -90, 0, 0, -30;
+  expectJacobians(r, dfdx, Mat2::Zero(),
+                  "across the spring a stretched spring pulls sideways with -ks (1 - l0/l): the "
+                  "(1 - l0/l)(I - e eᵀ) term");
+}
+
+TEST(Task7Implicit, JacobianOfADiagonalSpring) {
+  // e = (0.6, 0.8), l = 2, l0 = 1: dfdx = -ks (e eᵀ + ½ (I - e eᵀ)) = -ks/2 (I + e eᵀ).
+  const SpringForceRequest r = springOf(Vec2(1, 1), Vec2(2.2, 2.6), 1.0, 100);
+  Mat2 dfdx;
+  dfdx << -50 * 1.36, -50 * 0.48, -50 * 0.48, -50 * 1.64;
+  expectJacobians(r, dfdx, Mat2::Zero(), "e eᵀ is the 2x2 matrix e * e.transpose()");
+}
+
+TEST(Task7Implicit, JacobianOfASpringAtRest) {
+  // l = l0 = 0.5, e = (-0.6, 0.8): only the term along the spring is left, -ks e eᵀ.
+  const SpringForceRequest r = springOf(Vec2(0, 0), Vec2(-0.3, 0.4), 0.5, 50);
+  Mat2 dfdx;
+  dfdx << -50 * 0.36, 50 * 0.48, 50 * 0.48, -50 * 0.64;
+  expectJacobians(r, dfdx, Mat2::Zero(),
+                  "at rest the spring is still stiff along e: the -ks e eᵀ term does not vanish "
+                  "with l - l0");
+}
+
+TEST(Task7Implicit, JacobianOfACompressedSpring) {
+  // l = 0.5, l0 = 1, e = (0, 1): across the spring -ks (1 - 2) = +ks (a compressed spring pushes
+  // sideways), along it -ks.
+  const SpringForceRequest r = springOf(Vec2(0, 0), Vec2(0, 0.5), 1.0, 10);
+  Mat2 dfdx;
+  dfdx << 10, 0, 0, -10;
+  expectJacobians(r, dfdx, Mat2::Zero(),
+                  "1 - l0/l is negative for a compressed spring: keep its sign, do not clamp it");
+}
+
+TEST(Task7Implicit, DampingJacobianActsOnlyAlongTheSpring) {
+  // e = (1, 0), kd = 4: dfdv = -kd e eᵀ, whatever the velocities; the spring is at rest.
+  const SpringForceRequest r =
+      springOf(Vec2(0, 0), Vec2(2, 0), 2.0, 10, 4, Vec2(0.5, -1), Vec2(1, 3));
+  Mat2 dfdx, dfdv;
+  dfdx << -10, 0, 0, 0;
+  dfdv << -4, 0, 0, 0;
+  expectJacobians(r, dfdx, dfdv,
+                  "the damping force -kd ((v2 - v1)·e) e changes with v2 by -kd e eᵀ: only along "
+                  "the spring");
+}
+
+TEST(Task7Implicit, CoincidentParticlesGiveZeroJacobians) {
+  const SpringForceRequest r = springOf(Vec2(1, 1), Vec2(1, 1), 0.5, 100, 2);
+  const SpringForceResult j = jacobiansOf(r);
+  A6_ASSERT_RAN(j) << "\n" << input(r);
+  EXPECT_TRUE(j.dfdx.allFinite() && j.dfdv.allFinite() && j.dfdx.isZero() && j.dfdv.isZero())
+      << currentTask() << ": dfdx " << matrix(j.dfdx) << ", dfdv " << matrix(j.dfdv)
+      << ": expected zero (no direction, as in task 1)\n"
+      << input(r) << hint("return zero Jacobians when l < 1e-12, before dividing by l");
+}
+
+// --- Finite differences of your own force -----------------------------------------------------
+
+// Hand-computed springs and their forces on p2, each at rest in velocity (v1 = v2, so dfdx is
+// the whole derivative by position).
+struct KnownSpring {
+  SpringForceRequest request;
+  Vec2 force;  // on p2, N, computed by hand
+};
+
+std::vector<KnownSpring> knownSprings() {
+  return {{springOf(Vec2(0, 0), Vec2(1.5, 0), 1.0, 100), Vec2(-50, 0)},
+          {springOf(Vec2(1, 1), Vec2(1.6, 1.8), 0.5, 40), Vec2(-12, -16)},
+          {springOf(Vec2(0, 0), Vec2(0, 0.5), 1.0, 10), Vec2(0, 5)},
+          {springOf(Vec2(2, -1), Vec2(2.3, -0.6), 1.0, 20, 3, Vec2(1, 2), Vec2(1, 2)), Vec2(6, 8)}};
+}
+
+// The spring turned by `angle` about the origin and moved by `shift`: its force turns alike.
+KnownSpring turned(KnownSpring k, double angle, const Vec2& shift) {
+  Mat2 turn;
+  turn << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+  for (Particle* p : {&k.request.p1, &k.request.p2}) {
+    p->x = turn * p->x + shift;
+    p->v = turn * p->v;
+  }
+  k.force = turn * k.force;
+  return k;
+}
+
+// Your force on p2 with `change` applied to the request.
+template <typename Change>
+Vec2 forceAfter(SpringForceRequest r, Change&& change, bool& ran) {
+  change(r);
+  const SpringForceResult f = student().springForce(r);
+  ran = ran && f.ok();
+  return f.force;
+}
+
+// Central differences of your force by p2's and p1's position and velocity, column by column.
+struct Differences {
+  Mat2 byX2, byX1, byV2, byV1;
+};
+Differences differencesOf(const SpringForceRequest& r, double h, bool& ran) {
+  Differences d;
+  for (int c = 0; c < 2; ++c) {
+    const auto column = [&](auto member) {
+      const Vec2 plus = forceAfter(
+          r, [&](SpringForceRequest& q) { member(q)[c] += h; }, ran);
+      const Vec2 minus = forceAfter(
+          r, [&](SpringForceRequest& q) { member(q)[c] -= h; }, ran);
+      return Vec2((plus - minus) / (2 * h));
+    };
+    d.byX2.col(c) = column([](SpringForceRequest& q) -> Vec2& { return q.p2.x; });
+    d.byX1.col(c) = column([](SpringForceRequest& q) -> Vec2& { return q.p1.x; });
+    d.byV2.col(c) = column([](SpringForceRequest& q) -> Vec2& { return q.p2.v; });
+    d.byV1.col(c) = column([](SpringForceRequest& q) -> Vec2& { return q.p1.v; });
+  }
+  return d;
+}
+
+TEST(Task7Implicit, JacobiansMatchFiniteDifferencesOfYourForce) {
+  // Where your task 1 force is right (checked against the hand-computed value), your Jacobians
+  // must be its derivatives: ∂f2/∂x2 = dfdx, ∂f2/∂x1 = -dfdx, and the same for v. Where it is
+  // wrong, task 1's checks say so and this check does not blame task 7 for it.
+  // (A spring where your force is wrong is skipped: the check passes when none is left.)
+  std::string first;
+  for (const KnownSpring& base : knownSprings()) {
+    for (int k = 0; k < 6; ++k) {
+      const KnownSpring s = turned(base, 0.9 * k, Vec2(0.3 * k, -0.2 * k));
+      const SpringForceRequest& r = s.request;
+      const SpringForceResult own = student().springForce(r);
+      const double scale = r.ks * std::max((r.p2.x - r.p1.x).norm(), r.restLength);
+      if (!own.ok() || (own.force - s.force).norm() > 1e-9 * scale) continue;
+      const SpringForceResult j = jacobiansOf(r);
+      A6_ASSERT_RAN(j) << "\n" << input(r);
+      bool ran = true;
+      const Differences d = differencesOf(r, 1e-3 * std::max(r.restLength, 1.0), ran);
+      ASSERT_TRUE(ran) << currentTask() << ": your task 1 force failed on a nearby input\n"
+                       << input(r);
+      // Central differences: O(h²) of the scale, and a float force's rounding over h.
+      const double tol = 1e-3 * (r.ks + r.kd);
+      const std::pair<const char*, Mat2> pairs[] = {{"∂f2/∂x2 - dfdx", d.byX2 - j.dfdx},
+                                                    {"∂f2/∂x1 + dfdx", d.byX1 + j.dfdx},
+                                                    {"∂f2/∂v2 - dfdv", d.byV2 - j.dfdv},
+                                                    {"∂f2/∂v1 + dfdv", d.byV1 + j.dfdv}};
+      for (const auto& [what, difference] : pairs) {
+        if (first.empty() && !(difference.array().abs() <= tol).all()) {
+          first = std::string(what) + " = " + matrix(difference) + ", expected zero (your dfdx " +
+                  matrix(j.dfdx) + ", dfdv " + matrix(j.dfdv) + ")\n" + input(r);
+        }
+      }
+    }
+  }
+  EXPECT_TRUE(first.empty())
+      << currentTask() << ": your Jacobians are not the derivatives of your own force: " << first
+      << hint("differentiate f2 = -ks (l - l0) e - kd v_rel e: by x2 it is dfdx, by x1 -dfdx");
+}
+
+// --- Steps -------------------------------------------------------------------------------------
+
+SimulateRequest implicitRequest(std::vector<Particle> particles, std::vector<SpringData> springs,
+                                double dt, int frames) {
+  SimulateRequest r;
+  r.particles = std::move(particles);
+  r.springs = std::move(springs);
+  r.env.gravity = Vec2::Zero();
+  r.env.drag = 0;
+  r.env.buoyancy = 0;
+  r.env.repulsion = 0;
+  r.frameDt = dt;
+  r.frames = frames;
+  r.stepOnly = true;
+  r.implicit = true;
+  r.referenceForces = true;
+  return r;
+}
+
+Particle body(Vec2 x, Vec2 v, double m, bool pinned = false) {
+  Particle p = at(x, v);
+  p.m = m;
+  p.pinned = pinned;
+  return p;
+}
+
+SpringData springData(int i, int j, double restLength, double ks, double kd) {
+  SpringData s;
+  s.i = i;
+  s.j = j;
+  s.restLength = restLength;
+  s.ks = ks;
+  s.kd = kd;
+  return s;
+}
+
+std::string input(const SimulateRequest& r) {
+  std::string out = "  input: " + std::to_string(r.particles.size()) + " particle(s)";
+  for (std::size_t k = 0; k < std::min<std::size_t>(r.particles.size(), 2); ++k)
+    out += (k == 0 ? " " : ", ") + str(r.particles[k]);
+  if (!r.springs.empty()) {
+    const SpringData& s = r.springs[0];
+    out += "; spring " + std::to_string(s.i) + "-" + std::to_string(s.j) +
+           " l0=" + num(s.restLength) + " ks=" + num(s.ks) + " kd=" + num(s.kd);
+  }
+  return out + "; g=" + str(r.env.gravity) + "; " + std::to_string(r.frames) + " stepImplicit(" +
+         num(r.frameDt) + ")";
+}
+
+// Runs the request; fails the check unless every frame came back with every particle.
+::testing::AssertionResult ranAll(const SimulateRequest& r, const SimulateResult& result) {
+  if (!result.ok()) {
+    return ::testing::AssertionFailure()
+           << currentTask() << ": your code failed: " << result.error << "\n"
+           << input(r);
+  }
+  if (result.states.size() != static_cast<std::size_t>(r.frames)) {
+    return ::testing::AssertionFailure()
+           << currentTask() << ": expected " << r.frames << " states, got " << result.states.size();
+  }
+  for (const auto& state : result.states) {
+    if (state.size() != r.particles.size()) {
+      return ::testing::AssertionFailure()
+             << currentTask() << ": expected " << r.particles.size() << " particles, got "
+             << state.size() << hint("never add or remove particles in stepImplicit()");
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// A mass m on a spring (ks, kd, rest length 1) to an anchor pinned at the origin, u0 beyond its
+// rest length along x, moving at w0 along x: a linear spring, so one linearised step is exact
+// backward Euler.
+SimulateRequest anchored(double m, double ks, double kd, double u0, double w0, double dt,
+                         int frames) {
+  return implicitRequest(
+      {body(Vec2(0, 0), Vec2::Zero(), 1.0, true), body(Vec2(1 + u0, 0), Vec2(w0, 0), m)},
+      {springData(0, 1, 1.0, ks, kd)}, dt, frames);
+}
+
+constexpr char kStepHint[] =
+    "solve (M - h dfdv - h² dfdx) Δv = h (f + h dfdx v), then v += Δv and x += h v with the new "
+    "v; fix() the pinned particles so that the others are solved against an anchor that stays";
+
+TEST(Task7Implicit, OneStepOfALinearSpringIsBackwardEuler) {
+  // Backward Euler: m v1 = m v0 + h (-ks (u0 + h v1) - kd v1), so
+  //   v1 = (m v0 - h ks u0) / (m + h kd + h² ks),   x1 = x0 + h v1.
+  struct Case {
+    double m, ks, kd, u0, w0, dt;
+  };
+  const Case cases[] = {{1, 100, 0, 0.3, 0, 0.01},
+                        {2, 400, 3, -0.2, 1.5, 0.05},
+                        {0.5, 50, 0.5, 0.1, -2, 0.2},
+                        {0.01, 1000, 0.5, 0.05, 0.4, 1.0 / 60}};
+  ManyInputs inputs("the particle after one stepImplicit", kMetre);
+  for (const Case& c : cases) {
+    const SimulateRequest r = anchored(c.m, c.ks, c.kd, c.u0, c.w0, c.dt, 1);
+    const SimulateResult result = student().simulate(r);
+    ASSERT_TRUE(ranAll(r, result));
+    const double v1 = (c.m * c.w0 - c.dt * c.ks * c.u0) / (c.m + c.dt * c.kd + c.dt * c.dt * c.ks);
+    const Particle& p = result.states[0][1];
+    const double scale = std::abs(c.w0) + c.dt * c.ks * std::abs(c.u0) / c.m + std::abs(v1);
+    inputs.expectNear(p.v, Vec2(v1, 0), relativeTo(scale), "velocity; " + input(r));
+    inputs.expectNear(p.x, Vec2(1 + c.u0 + c.dt * v1, 0), relativeTo(1 + std::abs(c.u0)),
+                      "position; " + input(r));
+    inputs.expectNear(result.states[0][0].x, Vec2(0, 0), relativeTo(1),
+                      "the pinned anchor; " + input(r));
+  }
+  inputs.report(hint(kStepHint));
+}
+
+TEST(Task7Implicit, TheUndampedOscillatorLosesEnergyByTheExactFactor) {
+  // Backward Euler on an undamped oscillator never gains energy: each step multiplies
+  // E = ½ m v² + ½ ks u² by exactly 1 / (1 + (h ω)²). Here h ω = 0.5 (0.8 per step) and
+  // h ω = 3, beyond task 3's stability limit of 2 (0.1 per step).
+  for (const double hOmega : {0.5, 3.0}) {
+    const double m = 0.5, ks = 200, omega = std::sqrt(ks / m), h = hOmega / omega;
+    SimulateRequest r = anchored(m, ks, 0, 0.2, 1.0, h, 12);
+    const SimulateResult result = student().simulate(r);
+    ASSERT_TRUE(ranAll(r, result));
+    const auto energy = [&](const Particle& p) {
+      const double u = p.x.x() - 1;
+      return 0.5 * p.m * p.v.squaredNorm() + 0.5 * ks * u * u;
+    };
+    double before = energy(r.particles[1]);
+    const double factor = 1 / (1 + hOmega * hOmega);
+    ManyInputs inputs("the energy after each step, for h ω = " + num(hOmega), Unit{"J"});
+    for (int k = 0; k < r.frames; ++k) {
+      const double after = energy(result.states[k][1]);
+      inputs.expectNear(after, before * factor, relativeTo(before, kManySteps),
+                        "step " + std::to_string(k + 1) + "; " + input(r));
+      before = after;
+    }
+    inputs.report(
+        hint("backward Euler damps: if your energy grows, check the signs of the "
+             "Jacobians and that A = M - h dfdv - h² dfdx"));
+  }
+}
+
+TEST(Task7Implicit, PinnedParticlesStay) {
+  // A chain of four under gravity, its first particle pinned (and moving: it keeps its v and x).
+  SimulateRequest r = implicitRequest(
+      {body(Vec2(0, 0), Vec2(0.5, 0), 1.0, true), body(Vec2(0.3, 0), Vec2::Zero(), 0.2),
+       body(Vec2(0.6, 0), Vec2::Zero(), 0.2), body(Vec2(0.9, 0), Vec2::Zero(), 0.2)},
+      {springData(0, 1, 0.3, 500, 1), springData(1, 2, 0.3, 500, 1), springData(2, 3, 0.3, 500, 1)},
+      1.0 / 60, 10);
+  r.env.gravity = Vec2(0, -9.81);
+  const SimulateResult result = student().simulate(r);
+  ASSERT_TRUE(ranAll(r, result));
+  ManyInputs inputs("the pinned particle", kMetre);
+  for (int k = 0; k < r.frames; ++k) {
+    inputs.expectNear(result.states[k][0].x, Vec2(0, 0), relativeTo(1),
+                      "x after step " + std::to_string(k + 1) + "; " + input(r));
+    inputs.expectNear(result.states[k][0].v, Vec2(0.5, 0), relativeTo(1),
+                      "v after step " + std::to_string(k + 1) + "; " + input(r));
+  }
+  inputs.report(hint("a pinned particle never moves: skip it when you apply Δv and x += v h"));
+}
+
+// A cloth of n x n cells of `size` m with structural and shear springs, pinned at its top left
+// corner only, so that it swings down: the stiff cloth of the scenes (ks 1000 N/m on 10 g
+// particles).
+SimulateRequest stiffCloth(int n, double dt, int frames) {
+  const double size = 1.0, cell = size / n, m = 0.01, ks = 1000, kd = 0.5;
+  std::vector<Particle> particles;
+  for (int row = 0; row <= n; ++row) {
+    for (int col = 0; col <= n; ++col) {
+      const bool corner = row == 0 && col == 0;
+      particles.push_back(
+          body(Vec2(col * cell - size / 2, 1 - row * cell), Vec2::Zero(), m, corner));
+    }
+  }
+  const auto id = [n](int row, int col) { return row * (n + 1) + col; };
+  std::vector<SpringData> springs;
+  for (int row = 0; row <= n; ++row) {
+    for (int col = 0; col <= n; ++col) {
+      if (col < n) springs.push_back(springData(id(row, col), id(row, col + 1), cell, ks, kd));
+      if (row < n) springs.push_back(springData(id(row, col), id(row + 1, col), cell, ks, kd));
+      if (row < n && col < n) {
+        springs.push_back(
+            springData(id(row, col), id(row + 1, col + 1), cell * std::sqrt(2.0), ks, kd));
+        springs.push_back(
+            springData(id(row, col + 1), id(row + 1, col), cell * std::sqrt(2.0), ks, kd));
+      }
+    }
+  }
+  SimulateRequest r = implicitRequest(std::move(particles), std::move(springs), dt, frames);
+  r.env.gravity = Vec2(0, -9.81);
+  return r;
+}
+
+TEST(Task7Implicit, TheStiffClothStaysTogetherInOneStepPerFrame) {
+  // ω h = sqrt(1000 / 0.01) / 60 = 5.3: one symplectic step per frame explodes (task 3's
+  // stiff_cloth_1); one implicit step per frame must not. After 2 s the cloth has swung down
+  // from its corner: every particle within 3 m of where it started (the cloth is 1 m wide), every
+  // speed below 10 m/s, every spring within 50 % of its rest length, and its centre of mass at
+  // least 5 cm lower than it started (the solution: 10 cm).
+  SimulateRequest r = stiffCloth(8, 1.0 / 60, 120);
+  r.recordEvery = 1;
+  const SimulateResult result = student().simulate(r);
+  ASSERT_TRUE(ranAll(r, result));
+  ManyInputs inputs("the stiff cloth after 2 s of one stepImplicit(1/60 s) per frame", kMetre);
+  const std::vector<Particle>& last = result.states.back();
+  for (std::size_t k = 0; k < last.size(); ++k) {
+    const double moved = (last[k].x - r.particles[k].x).norm();
+    if (!(moved <= 3) || !(last[k].v.norm() <= 10)) {
+      inputs.fail("particle " + std::to_string(k) + " ended at " + str(last[k].x) +
+                  " with v = " + str(last[k].v) + ": it moved " + num(moved) + " m");
+    }
+  }
+  // ...and it swung down.
+  Vec2 start = Vec2::Zero(), end = Vec2::Zero();
+  for (std::size_t k = 0; k < last.size(); ++k) {
+    start += r.particles[k].x / static_cast<double>(last.size());
+    end += last[k].x / static_cast<double>(last.size());
+  }
+  if (!(end.y() <= start.y() - 0.05)) {
+    inputs.fail("the cloth's centre went from " + str(start) + " to " + str(end) +
+                ": gravity should have pulled it down by more than 5 cm");
+  }
+  for (const SpringData& s : r.springs) {
+    const double l = (last[s.j].x - last[s.i].x).norm();
+    if (!(std::abs(l - s.restLength) <= 0.5 * s.restLength)) {
+      inputs.fail("spring " + std::to_string(s.i) + "-" + std::to_string(s.j) + " is " + num(l) +
+                  " m long, its rest length " + num(s.restLength) + " m");
+      break;
+    }
+  }
+  inputs.report(
+      hint("an implicit step is stable at any step size: if the cloth explodes, check "
+           "the Jacobians' signs and that you solve for Δv with dt² dfdx"));
+}
+
+TEST(Task7Implicit, TinyStepsAgreeWithSymplecticEulerToFirstOrder) {
+  // Springs at rest and gravity: the force is m g, so symplectic Euler gives Δv = g h exactly.
+  // Implicit Euler agrees to first order: |Δv / h - g| shrinks in proportion to h.
+  const auto run = [](double h) {
+    SimulateRequest r = implicitRequest(
+        {body(Vec2(0, 0), Vec2(0.4, -0.2), 0.3), body(Vec2(0.5, 0.1), Vec2(-0.3, 0.6), 0.2),
+         body(Vec2(0.2, 0.6), Vec2(0.1, 0.2), 0.5)},
+        {springData(0, 1, std::sqrt(0.26), 300, 0), springData(1, 2, std::sqrt(0.34), 300, 0),
+         springData(0, 2, std::sqrt(0.4), 300, 0)},
+        h, 1);
+    r.env.gravity = Vec2(0, -9.81);
+    return r;
+  };
+  std::vector<double> errors;
+  ManyInputs positions("x1 - x0, which must be h v1 (the NEW velocity)", kMetre);
+  for (const double h : {1e-3, 5e-4, 2.5e-4}) {
+    const SimulateRequest r = run(h);
+    const SimulateResult result = student().simulate(r);
+    ASSERT_TRUE(ranAll(r, result));
+    double error = 0;
+    for (std::size_t k = 0; k < r.particles.size(); ++k) {
+      const Vec2 dv = result.states[0][k].v - r.particles[k].v;
+      error = std::max(error, (dv / h - r.env.gravity).norm());
+      const Vec2 dx = result.states[0][k].x - r.particles[k].x;
+      positions.expectNear(dx, Vec2(h * result.states[0][k].v), relativeTo(h * 10),
+                           "particle " + std::to_string(k) + "; " + input(r));
+    }
+    errors.push_back(error);
+  }
+  positions.report(hint(kStepHint));
+  // First order: the error halves with h (and is small: below g itself at h = 1 ms).
+  EXPECT_LE(errors[0], 9.81) << currentTask() << ": at h = 1e-3 s, |Δv/h - g| is " << num(errors[0])
+                             << " m/s², expected it near 0"
+                             << hint("Δv is the CHANGE of velocity: v += Δv, b = h (f + h dfdx v)");
+  for (std::size_t k = 1; k < errors.size(); ++k) {
+    EXPECT_TRUE(errors[k] <= 0.6 * errors[k - 1] && errors[k] >= 0.4 * errors[k - 1])
+        << currentTask() << ": |Δv/h - g| went from " << num(errors[k - 1]) << " to "
+        << num(errors[k]) << " m/s² when h halved; first order halves it"
+        << hint("b = h (f + h dfdx v) and A = M - h dfdv - h² dfdx: check each power of h");
+  }
+}
+
+}  // namespace
+}  // namespace a6::test
