@@ -142,20 +142,25 @@ TEST(Task7Implicit, CoincidentParticlesGiveZeroJacobians) {
 // --- Finite differences of your own force -----------------------------------------------------
 
 // Hand-computed springs and their forces on p2, each at rest in velocity (v1 = v2, so dfdx is
-// the whole derivative by position).
+// the whole derivative by position); for a damped one, also the force with p2 moving by `dv2`.
 struct KnownSpring {
   SpringForceRequest request;
-  Vec2 force;  // on p2, N, computed by hand
+  Vec2 force;                                      // on p2, N, computed by hand
+  std::vector<std::pair<Vec2, Vec2>> moving = {};  // (dv2, the force on p2 then), by hand
 };
 
 std::vector<KnownSpring> knownSprings() {
+  // The damped spring: e = (0.6, 0.8); p2 moving along e at 1 m/s adds -kd e = (-1.8, -2.4),
+  // across e nothing.
   return {{springOf(Vec2(0, 0), Vec2(1.5, 0), 1.0, 100), Vec2(-50, 0)},
           {springOf(Vec2(1, 1), Vec2(1.6, 1.8), 0.5, 40), Vec2(-12, -16)},
           {springOf(Vec2(0, 0), Vec2(0, 0.5), 1.0, 10), Vec2(0, 5)},
-          {springOf(Vec2(2, -1), Vec2(2.3, -0.6), 1.0, 20, 3, Vec2(1, 2), Vec2(1, 2)), Vec2(6, 8)}};
+          {springOf(Vec2(2, -1), Vec2(2.3, -0.6), 1.0, 20, 3, Vec2(1, 2), Vec2(1, 2)),
+           Vec2(6, 8),
+           {{Vec2(0.6, 0.8), Vec2(4.2, 5.6)}, {Vec2(-0.8, 0.6), Vec2(6, 8)}}}};
 }
 
-// The spring turned by `angle` about the origin and moved by `shift`: its force turns alike.
+// The spring turned by `angle` about the origin and moved by `shift`: its forces turn alike.
 KnownSpring turned(KnownSpring k, double angle, const Vec2& shift) {
   Mat2 turn;
   turn << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
@@ -164,7 +169,28 @@ KnownSpring turned(KnownSpring k, double angle, const Vec2& shift) {
     p->v = turn * p->v;
   }
   k.force = turn * k.force;
+  for (auto& [dv2, force] : k.moving) {
+    dv2 = turn * dv2;
+    force = turn * force;
+  }
   return k;
+}
+
+// Whether your task 1 force is the hand-computed one at the spring, and with p2 moving.
+bool forceIsRight(const KnownSpring& s) {
+  const SpringForceRequest& r = s.request;
+  const double scale = r.ks * std::max((r.p2.x - r.p1.x).norm(), r.restLength) + r.kd;
+  const auto right = [&](const SpringForceRequest& q, const Vec2& force) {
+    const SpringForceResult own = student().springForce(q);
+    return own.ok() && (own.force - force).norm() <= 1e-9 * scale;
+  };
+  bool ok = right(r, s.force);
+  for (const auto& [dv2, force] : s.moving) {
+    SpringForceRequest q = r;
+    q.p2.v += dv2;
+    ok = ok && right(q, force);
+  }
+  return ok;
 }
 
 // Your force on p2 with `change` applied to the request.
@@ -208,9 +234,7 @@ TEST(Task7Implicit, JacobiansMatchFiniteDifferencesOfYourForce) {
     for (int k = 0; k < 6; ++k) {
       const KnownSpring s = turned(base, 0.9 * k, Vec2(0.3 * k, -0.2 * k));
       const SpringForceRequest& r = s.request;
-      const SpringForceResult own = student().springForce(r);
-      const double scale = r.ks * std::max((r.p2.x - r.p1.x).norm(), r.restLength);
-      if (!own.ok() || (own.force - s.force).norm() > 1e-9 * scale) continue;
+      if (!forceIsRight(s)) continue;
       const SpringForceResult j = jacobiansOf(r);
       A6_ASSERT_RAN(j) << "\n" << input(r);
       bool ran = true;

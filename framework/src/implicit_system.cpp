@@ -3,6 +3,7 @@
 #include <Eigen/SparseLU>
 #include <stdexcept>
 #include <string>
+#include <unsupported/Eigen/IterativeSolvers>
 
 #include "a6/implicit.h"
 
@@ -19,11 +20,48 @@ void checkIndex(int i, int n, const char* what) {
 
 bool allFinite(const Eigen::VectorXd& x) { return x.allFinite(); }
 
+using Sparse = Eigen::SparseMatrix<double>;
+
 // The conjugate gradient's relative residual |A Δv - b| / |b| to reach, its iterations at most,
 // and the residual it must reach for its answer to be taken (else the sparse LU solves).
-constexpr double kTolerance = 1e-10;
+constexpr double kTolerance = 1e-8;
 constexpr int kMaxIterations = 1000;
 constexpr double kAcceptable = 1e-6;
+
+// MINRES on D A D y = D b, x = D y, with D = |diag A|^-1/2: the symmetric scaling that Jacobi
+// preconditioning is for CG, kept symmetric for MINRES, which takes an indefinite A.
+Eigen::VectorXd solveIndefinite(const Sparse& a, const Eigen::VectorXd& b, double& error) {
+  Eigen::VectorXd d = a.diagonal().cwiseAbs().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+  const Sparse scaled = d.asDiagonal() * a * d.asDiagonal();
+  Eigen::MINRES<Sparse, Eigen::Lower | Eigen::Upper, Eigen::IdentityPreconditioner> minres;
+  minres.setTolerance(kTolerance);
+  minres.setMaxIterations(kMaxIterations);
+  minres.compute(scaled);
+  const Eigen::VectorXd x = d.asDiagonal() * minres.solve(d.asDiagonal() * b);
+  error = minres.error();
+  return x;
+}
+
+// Conjugate gradient while A is positive definite (every spring stretched); MINRES where a
+// compressed spring makes A indefinite and CG stalls; a sparse LU as the last resort.
+Eigen::VectorXd solveSymmetric(const Sparse& a, const Eigen::VectorXd& b) {
+  Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper> cg;
+  cg.setTolerance(kTolerance);
+  cg.setMaxIterations(kMaxIterations);
+  cg.compute(a);
+  Eigen::VectorXd x = cg.solve(b);
+  if (allFinite(x) && cg.error() <= kAcceptable) return x;
+  double error = 0;
+  x = solveIndefinite(a, b, error);
+  if (allFinite(x) && error <= kAcceptable) return x;
+  Eigen::SparseLU<Sparse> lu;
+  lu.compute(a);
+  if (lu.info() != Eigen::Success) {
+    throw std::runtime_error("ImplicitSystem::solve: the matrix is singular (" +
+                             lu.lastErrorMessage() + ")");
+  }
+  return lu.solve(b);
+}
 
 }  // namespace
 
@@ -65,25 +103,10 @@ std::vector<Vec2> ImplicitSystem::solve() const {
     kept.emplace_back(2 * i + 1, 2 * i + 1, 1.0);
     b.segment<2>(2 * i).setZero();
   }
-  Eigen::SparseMatrix<double> a(2 * n_, 2 * n_);
+  Sparse a(2 * n_, 2 * n_);
   a.setFromTriplets(kept.begin(), kept.end());  // duplicates are summed
 
-  // Conjugate gradient (A symmetric); a sparse LU where it does not converge (a compressed
-  // spring can make A indefinite).
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
-  cg.setTolerance(kTolerance);
-  cg.setMaxIterations(kMaxIterations);
-  cg.compute(a);
-  Eigen::VectorXd dv = cg.solve(b);
-  if (!allFinite(dv) || !(cg.error() <= kAcceptable)) {
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-    lu.compute(a);
-    if (lu.info() != Eigen::Success) {
-      throw std::runtime_error("ImplicitSystem::solve: the matrix is singular (" +
-                               lu.lastErrorMessage() + ")");
-    }
-    dv = lu.solve(b);
-  }
+  const Eigen::VectorXd dv = solveSymmetric(a, b);
   if (!allFinite(dv)) throw std::runtime_error("ImplicitSystem::solve: the result is not finite");
 
   std::vector<Vec2> out(n_);

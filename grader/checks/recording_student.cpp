@@ -20,6 +20,7 @@ std::string publicCheckRunning() {
   if (info == nullptr) return "";
   const std::string suite = info->test_suite_name();
   if (suite.rfind("Task", 0) != 0 || suite.find("Hidden") != std::string::npos) return "";
+  if (suite.size() < 5 || suite[4] < '1' || suite[4] > '6') return "";  // task 7: not recorded
   return suite + "." + info->name();
 }
 

@@ -154,18 +154,19 @@ std::vector<Entry> sixFiles(const std::string& prefix) {
 
 // ---- the layouts a submission comes in ----
 
-TEST_F(Intake_, FolderWithTheSixFilesAtItsRootLikeGradescope) {
+TEST_F(Intake_, FolderWithTheTaskFilesAtItsRootLikeGradescope) {
   const fs::path sub = root / "autograder" / "submission";
   for (const std::string& f : kTaskFiles) writeFile(sub / f, source(f));
   writeFile(sub / "README.md", "hello");
   writeFile(sub / "main.cpp", "int main() {}");
   const Intake in = takeSubmission(sub, dest);
   ASSERT_TRUE(in.ok()) << in.error;
-  EXPECT_EQ(in.files.size(), 6u);
+  EXPECT_EQ(in.files.size(), kTaskFiles.size());
   for (const std::string& f : kTaskFiles) expectTaken(in, f, source(f));
   EXPECT_TRUE(in.notes.empty()) << allNotes(in);
-  // Nothing but the six files is written.
-  EXPECT_EQ(std::distance(fs::directory_iterator(dest), fs::directory_iterator()), 6);
+  // Nothing but the task files is written.
+  EXPECT_EQ(std::distance(fs::directory_iterator(dest), fs::directory_iterator()),
+            static_cast<std::ptrdiff_t>(kTaskFiles.size()));
 }
 
 TEST_F(Intake_, ZipOfAFolderHoldingTheFiles) {
@@ -182,7 +183,7 @@ TEST_F(Intake_, TarGzDetectedByContentNotByName) {
   writeArchive(root / "submission.bin", Format::TarGz, sixFiles("a6/"));
   const Intake in = takeSubmission(root / "submission.bin", dest);
   ASSERT_TRUE(in.ok()) << in.error;
-  EXPECT_EQ(in.files.size(), 6u);
+  EXPECT_EQ(in.files.size(), kTaskFiles.size());
   expectTaken(in, "cloth.cpp", source("cloth.cpp"));
 }
 

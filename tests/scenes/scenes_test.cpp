@@ -131,7 +131,7 @@ TEST(SceneRegistry, HasEverySceneOfTheSpec) {
   for (const char* required :
        {"single_spring", "hanging_chain", "cloth_structural", "cloth_shear", "cloth_bending",
         "stiff_cloth_1", "stiff_cloth_10", "fire", "soft_body", "pendulum", "rope", "bridge",
-        "piston", "car", "mouse_drag"}) {
+        "piston", "car", "mouse_drag", "stiff_cloth_implicit"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), required), names.end()) << required;
   }
   EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), names.size())
@@ -143,7 +143,7 @@ TEST(SceneRegistry, HasEverySceneOfTheSpec) {
     EXPECT_FALSE(info->title.empty()) << name;
     EXPECT_FALSE(info->description.empty()) << name;
     EXPECT_GE(info->task, 1) << name;
-    EXPECT_LE(info->task, 6) << name;
+    EXPECT_LE(info->task, 7) << name;
     const SceneParams p = defaultParams(name);
     EXPECT_GT(p.dt, 0) << name;
     EXPECT_GE(p.substeps, 1) << name;

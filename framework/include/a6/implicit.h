@@ -43,8 +43,8 @@ SpringJacobians springJacobians(const Spring& s);
 ///   std::vector<Vec2> dv = sys.solve();   // dv[i]: the velocity change of particle i, m/s
 ///
 /// A must be symmetric (add block (i, j) and its transpose at (j, i)); the solve is Eigen's
-/// sparse conjugate gradient, with a sparse LU where CG does not converge (a compressed spring
-/// can make A indefinite). Blocks and fixes may come in any order.
+/// sparse conjugate gradient, then MINRES where CG does not converge (a compressed spring can
+/// make A indefinite), then a sparse LU. Blocks and fixes may come in any order.
 class ImplicitSystem {
  public:
   explicit ImplicitSystem(int particles);
