@@ -3,7 +3,7 @@
 # (Gradescope's default image): the zip's own setup.sh and run_autograder, run with the
 # toolchain versions 22.04 ships (CMake 3.22.1, g++ 11, GoogleTest 1.11.0, nlohmann-json 3.10.5)
 # in a private mount namespace where /etc/os-release says Ubuntu 22.04 and this machine's toml++,
-# GoogleTest and nlohmann-json are hidden. The solution must get 103 (100 + 3 extra credit), the
+# GoogleTest and nlohmann-json are hidden. The solution must get 113 (100 + 13 extra credit), the
 # starter 0.
 #
 #   scripts/compat-ubuntu2204.sh            (as root: the mount namespace needs it)
@@ -133,7 +133,7 @@ check "GoogleTest 1.11 from the 22.04 toolchain" test "$(cache_value GTest_DIR)"
 check "toml++ from the zip's copy" bash -c "grep -q 'A6_TOMLPLUSPLUS_INCLUDE:PATH=$work/autograder/source/vendor' '$work/autograder/source/build/CMakeCache.txt'"
 score() { jq -r '.score' "$work/$1.json" 2>/dev/null; }
 say "solution: $(score solution), starter: $(score starter)"
-check "the solution gets 103 (100 + 3 extra credit)" test "$(score solution)" = 103
+check "the solution gets 113 (100 + 13 extra credit)" test "$(score solution)" = 113
 check "the starter gets 0" bash -c "[ '$(score starter)' = 0 ] || [ '$(score starter)' = 0.0 ]"
 say "setup.sh and two gradings in $setup_seconds s; $(($(date +%s) - start)) s in all"
 if [ "$failures" -gt 0 ]; then

@@ -15,7 +15,7 @@
 #   test        the README's second command: scripts/test.sh (the whole suite; ctest's summary)
 #   gradescope  the Gradescope zip (made here by scripts/gradescope-package.sh) as Gradescope runs
 #               it: setup.sh as root in /autograder/source (it installs its packages with apt),
-#               then run_autograder on the solution and on the starter; they must get 103 and 0
+#               then run_autograder on the solution and on the starter; they must get 113 and 0
 #   student     the student release (made here by grader/release/export-student.sh) as a student
 #               runs it: its scripts/install-deps.sh, scripts/check.sh and scripts/test.sh
 #
@@ -161,8 +161,8 @@ for job in $jobs; do
       solution=$(jq -r .score "$target.gradescope-solution.json" 2>/dev/null)
       starter=$(jq -r .score "$target.gradescope-starter.json" 2>/dev/null)
       say "Gradescope zip on $suite: solution $solution, starter $starter"
-      [ "$solution" = 103 ] && { [ "$starter" = 0 ] || [ "$starter" = 0.0 ]; } ||
-        { say "FAILED: the solution must get 103 and the starter 0"; failures=$((failures + 1)); }
+      [ "$solution" = 113 ] && { [ "$starter" = 0 ] || [ "$starter" = 0.0 ]; } ||
+        { say "FAILED: the solution must get 113 and the starter 0"; failures=$((failures + 1)); }
       ;;
     student)
       [ -x "$repo/build/grader/a6_grade" ] || { say "student: build a6_grade here first (cmake --build build --target a6_grade)"; exit 1; }

@@ -54,10 +54,10 @@ echo "      scripts/main.sh: exit $status after $(( $(date +%s) - start )) s (lo
 [ "$status" -eq 0 ] || { grep -E '^main:|error' "$work/main.log" | head -20; fail "scripts/main.sh exited $status"; }
 score_of() { grep -m1 '"score"' "$1" 2>/dev/null | tr -dc '0-9.'; }
 solution=$(score_of out/solution/results.json) starter=$(score_of out/starter/results.json)
-[ "$solution" = "103.0" ] || fail "the solution scored '$solution', not 103.0 (100 and the extra credit)"
+[ "$solution" = "113.0" ] || fail "the solution scored '$solution', not 113.0 (100 and the extra credit)"
 [ "$starter" = "0.0" ] || fail "the starter scored '$starter', not 0.0"
-grep -q 'total *100.00 / 100.00 *+3.00 extra credit' "$work/main.log" ||
-  fail "the main job's summary does not give the solution 100 / 100 + 3"
+grep -q 'total *100.00 / 100.00 *+13.00 extra credit' "$work/main.log" ||
+  fail "the main job's summary does not give the solution 100 / 100 + 13"
 for blame in "did not compile" "the grader kit is broken" "Permission denied"; do
   if grep -q "$blame" out/solution/results.json "$work/main.log"; then
     fail "the solution's grading says '$blame'"

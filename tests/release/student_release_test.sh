@@ -47,7 +47,7 @@ for present in README.md scripts/install-deps.sh scripts/test.sh scripts/check.s
   [ -e "$release/$present" ] || fail "$present is missing from the release"
 done
 starters=$(ls "$release"/starter/*.cpp 2>/dev/null | wc -l)
-[ "$starters" -eq 6 ] || fail "the release has $starters starter files, not 6"
+[ "$starters" -eq 7 ] || fail "the release has $starters starter files, not 7"
 for f in "$root"/starter/*.cpp; do
   cmp -s "$f" "$release/starter/$(basename "$f")" || fail "starter/$(basename "$f") differs from the starter"
 done
@@ -56,7 +56,7 @@ public_pngs=$(ls "$root"/tests/golden/*.png | wc -l)
 [ "$pngs" -eq "$public_pngs" ] || fail "$pngs reference images in the release, $public_pngs public ones"
 grep -q 'Hidden' "$release/grader/rubric.toml" && fail "the release's rubric names hidden checks"
 grep -q '^total = 87' "$release/grader/rubric.toml" || fail "the public rubric's total is not 87"
-pass "contents: 6 starter files, $pngs reference images, public rubric"
+pass "contents: 7 starter files, $pngs reference images, public rubric"
 
 # The scan, written differently from scan-release.sh: the solution's statements (lines ending in
 # ';', 25+ characters, not comments; loop and block headers such as "for (int j = 0; j <= n; ++j) {"
@@ -139,8 +139,8 @@ pass "scripts/check.sh on the starter: 0 / 87, report.html written"
 mkdir -p "$work/finished"
 cp "$root"/solution/*.cpp "$work/finished/"
 bash scripts/check.sh "$work/finished" >"$work/check_solution.log" 2>&1
-grep -q 'total *87.00 / 87.00 *+3.00 extra credit' "$work/check_solution.log" ||
-  { tail -5 "$work/check_solution.log"; fail "a finished submission does not get 87 / 87 + 3 in the local check"; }
+grep -q 'total *87.00 / 87.00 *+13.00 extra credit' "$work/check_solution.log" ||
+  { tail -5 "$work/check_solution.log"; fail "a finished submission does not get 87 / 87 + 13 in the local check"; }
 pass "scripts/check.sh on a finished submission: $(grep -m1 'total ' "$work/check_solution.log" | tr -s ' ')"
 
 # A wrong cloth: the local check and the graders' a6_grade agree item by item on the public items.
