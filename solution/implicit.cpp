@@ -23,7 +23,7 @@ SpringJacobians springJacobians(const Spring& s) {
 }
 
 void MassSpringSystem::stepImplicit(double dt) {
-  const int n = static_cast<int>(particles.size());
+  const int count = static_cast<int>(particles.size());
 
   // 1. The forces, as in step(): external, then every spring's on both of its particles.
   for (Particle& p : particles) p.f = externalForce(p);
@@ -34,8 +34,8 @@ void MassSpringSystem::stepImplicit(double dt) {
   }
 
   // 2. A = M - dt ∂f/∂v - dt² ∂f/∂x and b = dt (f + dt ∂f/∂x v), particle by particle...
-  ImplicitSystem system(n);
-  for (int i = 0; i < n; ++i) {
+  ImplicitSystem system(count);
+  for (int i = 0; i < count; ++i) {
     const Particle& p = particles[i];
     system.addBlock(i, i, p.m * Mat2::Identity());
     system.addToB(i, dt * p.f);
@@ -57,13 +57,13 @@ void MassSpringSystem::stepImplicit(double dt) {
   }
 
   // 3. Pinned particles keep their velocity: Δv = 0.
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < count; ++i) {
     if (particles[i].pinned) system.fix(i);
   }
 
   // 4. Solve for Δv; then v += Δv and x += v dt with the new v.
   const std::vector<Vec2> dv = system.solve();
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < count; ++i) {
     Particle& p = particles[i];
     if (p.pinned) continue;
     p.v += dv[i];

@@ -228,10 +228,11 @@ std::optional<int> Grading::intake() {
                 report_.intake.error);
   }
   if (report_.intake.files.empty()) {
-    return stop(Stop::NothingToGrade,
-                "none of the six task files (spring.cpp, forces.cpp, time_stepping.cpp, "
-                "cloth.cpp, particle_system.cpp, joints.cpp) could be taken from " +
-                    options_.submission + ": nothing to grade");
+    std::string names;
+    for (const std::string& f : kTaskFiles) names += (names.empty() ? "" : ", ") + f;
+    return stop(Stop::NothingToGrade, "none of the task files (" + names +
+                                          ") could be taken from " + options_.submission +
+                                          ": nothing to grade");
   }
   report_.seed = options_.seed ? *options_.seed : seedOf(report_.intake.files);
   return std::nullopt;

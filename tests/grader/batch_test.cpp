@@ -596,9 +596,10 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
     ASSERT_EQ(staging::writeArchive(in / ("hostile_" + c.name + ext), c.zip(), c.entries), "");
     add("hostile_" + c.name);
   }
-  // A damaged archive, an empty folder, and something that is no submission at all.
+  // A damaged archive (cut inside its first file's data, so that no task file is whole), an
+  // empty folder, and something that is no submission at all.
   std::string zip = readAll(in / "hostile_zip_traversal.zip");
-  writeAll(in / "corrupt.zip", zip.substr(0, zip.size() / 3) + std::string(200, '\x7f'));
+  writeAll(in / "corrupt.zip", zip.substr(0, 100) + std::string(200, '\x7f'));
   add("corrupt");
   fs::create_directories(in / "empty");
   add("empty");

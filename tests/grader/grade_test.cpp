@@ -127,7 +127,7 @@ TEST(GradeCommand, NoSubmissionToGradeStopsEarlyWithExit2) {
   const struct {
     std::string submission, says;
   } cases[] = {{"/nonexistent/submission.zip", "does not exist"},
-               {(base / "empty").string(), "none of the six task files"},
+               {(base / "empty").string(), "none of the task files (spring.cpp"},
                // The intake's notes come along: here, why Spring.cpp was not taken.
                {(base / "misnamed").string(), "ignored: the name must be exactly"},
                {(base / "junk.zip").string(), "cannot read"}};
