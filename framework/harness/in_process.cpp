@@ -143,8 +143,7 @@ void advanceFrame(MassSpringSystem& system, const SimulateRequest& request) {
     }
     return;
   }
-  const int steps = request.stepOnly ? 1 : std::max(1, request.substeps);
-  for (int k = 0; k < steps; ++k) system.stepImplicit(request.frameDt / steps);
+  system.advanceImplicit(request.frameDt, request.stepOnly ? 1 : request.substeps);
 }
 
 // Runs `body` and turns any exception into the result's error.

@@ -161,8 +161,11 @@ class MassSpringScene final : public Scene {
 
   void stepFrame() override {
     const SceneParams& p = params();
-    if (!p.implicit) return system_.advance(p.dt, p.substeps);
-    for (int k = 0; k < p.substeps; ++k) system_.stepImplicit(p.dt / p.substeps);
+    if (p.implicit) {
+      system_.advanceImplicit(p.dt, p.substeps);
+    } else {
+      system_.advance(p.dt, p.substeps);
+    }
   }
 
  private:

@@ -2,6 +2,7 @@
 // task 7.
 #include "a6/mass_spring_system.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -86,6 +87,11 @@ std::vector<std::array<int, 2>> MassSpringSystem::springEnds() const {
   ends.reserve(springs.size());
   for (const Spring& s : springs) ends.push_back({find(s.p1), find(s.p2)});
   return ends;
+}
+
+void MassSpringSystem::advanceImplicit(double frameDt, int substeps) {
+  const int steps = std::max(1, substeps);
+  for (int k = 0; k < steps; ++k) stepImplicit(frameDt / steps);
 }
 
 }  // namespace a6

@@ -45,6 +45,9 @@ class MassSpringSystem {
   /// particles are fixed (Δv = 0); then, for every particle that is not pinned, v += Δv and
   /// x += v dt (with the new v). External forces stay explicit (their Jacobians are left out).
   void stepImplicit(double dt);
+  /// Advances by frameDt seconds in `substeps` calls of stepImplicit(frameDt / substeps) (the
+  /// framework's, like advance() for step()). substeps >= 1.
+  void advanceImplicit(double frameDt, int substeps);
 
   /// The external force on p (gravity, buoyancy, drag, collisions): your externalForce(p, env)
   /// unless a test has swapped in a reference model (see force_model.h). N, world frame.
