@@ -137,7 +137,8 @@ bool Renderer::ensureFramebuffer(int width, int height) {
   return true;
 }
 
-bool Renderer::draw(const Snapshot& snapshot, int width, int height, const RenderOptions& options) {
+bool Renderer::draw(const Snapshot& snapshot, int width, int height, const RenderOptions& options,
+                    int left) {
   if (program_ == 0 || vertexArray_ == 0) {
     if (error_.empty()) error_ = "Renderer: not initialised";
     return false;
@@ -148,11 +149,13 @@ bool Renderer::draw(const Snapshot& snapshot, int width, int height, const Rende
   const std::vector<Vertex> vertices = buildGeometry(snapshot, width, height, options);
 
   // State that changes pixels is set here, whatever the caller (e.g. ImGui) left behind.
-  gl_.Viewport(0, 0, width, height);
+  // The scissor keeps the clear inside the viewport (two views side by side in one window).
+  gl_.Viewport(left, 0, width, height);
+  gl_.Scissor(left, 0, width, height);
+  gl_.Enable(GL_SCISSOR_TEST);
   gl_.Disable(GL_BLEND);
   gl_.Disable(GL_DEPTH_TEST);
   gl_.Disable(GL_STENCIL_TEST);
-  gl_.Disable(GL_SCISSOR_TEST);
   gl_.Disable(GL_CULL_FACE);
   gl_.Disable(GL_MULTISAMPLE);
   gl_.Disable(GL_FRAMEBUFFER_SRGB);
@@ -170,6 +173,7 @@ bool Renderer::draw(const Snapshot& snapshot, int width, int height, const Rende
   gl_.BindVertexArray(0);
   gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
   gl_.UseProgram(0);
+  gl_.Disable(GL_SCISSOR_TEST);
   if (GLenum e = gl_.GetError(); e != GL_NO_ERROR) {
     return fail("Renderer: drawing failed with " + glErrorName(e));
   }

@@ -41,9 +41,10 @@ class Renderer {
                const RenderOptions& options = RenderOptions());
 
   /// Draws `snapshot` into the framebuffer bound now (e.g. a window's), in the viewport
-  /// (0, 0, width, height), background included. For the viewer; does not change the context.
+  /// (left, 0, width, height), background included, leaving the pixels outside it alone. For
+  /// the viewer; does not change the context.
   bool draw(const Snapshot& snapshot, int width, int height,
-            const RenderOptions& options = RenderOptions());
+            const RenderOptions& options = RenderOptions(), int left = 0);
 
   /// The GL functions of the context (for the viewer's own few calls).
   const GLFunctions& gl() const { return gl_; }

@@ -1,15 +1,29 @@
 // The framework's part of task 7: the sparse system of one implicit step and its solve.
-#include <Eigen/IterativeLinearSolvers>
+//
+// A step's system has the same shape at every step (the same springs, added in the same order),
+// so what depends on the shape only is made once and kept by the thread: the sparse matrix's
+// pattern, where each added block's entries go in it, and the factorisation's symbolic analysis
+// (the AMD ordering and elimination tree, which cost about twice the numeric factorisation). A
+// step then writes its values into the kept matrix and factorises it. The answer is the same,
+// bit for bit, as from a matrix built afresh.
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
+#include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <string>
-#include <unsupported/Eigen/IterativeSolvers>
+#include <utility>
 
 #include "a6/implicit.h"
 
 namespace a6 {
 
 namespace {
+
+using Sparse = Eigen::SparseMatrix<double>;
+
+// The relative residual |A Δv - b| / |b| an answer must reach to be taken.
+constexpr double kAcceptable = 1e-6;
 
 void checkIndex(int i, int n, const char* what) {
   if (i < 0 || i >= n) {
@@ -18,44 +32,105 @@ void checkIndex(int i, int n, const char* what) {
   }
 }
 
-bool allFinite(const Eigen::VectorXd& x) { return x.allFinite(); }
+// What a thread keeps from its last solve (see the top of this file).
+struct Workspace {
+  int n = -1;
+  std::vector<std::array<int, 2>> keys;  // (i, j) of every block, in the order added
+  std::vector<bool> fixed;
+  std::vector<int> slots;     // 4 per block, (r, c) row-major: its index in a's values, or -1
+  std::vector<int> identity;  // the indices of the fixed particles' diagonal entries
+  Sparse a;
+  Eigen::SimplicialLDLT<Sparse> ldlt;
+  std::vector<ImplicitSystem::Block> spare;  // a block buffer, handed from a system to the next
+};
 
-using Sparse = Eigen::SparseMatrix<double>;
-
-// The conjugate gradient's relative residual |A Δv - b| / |b| to reach, its iterations at most,
-// and the residual it must reach for its answer to be taken (else the sparse LU solves).
-constexpr double kTolerance = 1e-8;
-constexpr int kMaxIterations = 1000;
-constexpr double kAcceptable = 1e-6;
-
-// MINRES on D A D y = D b, x = D y, with D = |diag A|^-1/2: the symmetric scaling that Jacobi
-// preconditioning is for CG, kept symmetric for MINRES, which takes an indefinite A.
-Eigen::VectorXd solveIndefinite(const Sparse& a, const Eigen::VectorXd& b, double& error) {
-  Eigen::VectorXd d = a.diagonal().cwiseAbs().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
-  const Sparse scaled = d.asDiagonal() * a * d.asDiagonal();
-  Eigen::MINRES<Sparse, Eigen::Lower | Eigen::Upper, Eigen::IdentityPreconditioner> minres;
-  minres.setTolerance(kTolerance);
-  minres.setMaxIterations(kMaxIterations);
-  minres.compute(scaled);
-  const Eigen::VectorXd x = d.asDiagonal() * minres.solve(d.asDiagonal() * b);
-  error = minres.error();
-  return x;
+Workspace& workspace() {
+  thread_local Workspace w;
+  return w;
 }
 
-// Conjugate gradient while A is positive definite (every spring stretched); MINRES where a
-// compressed spring makes A indefinite and CG stalls; a sparse LU as the last resort.
-Eigen::VectorXd solveSymmetric(const Sparse& a, const Eigen::VectorXd& b) {
-  Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper> cg;
-  cg.setTolerance(kTolerance);
-  cg.setMaxIterations(kMaxIterations);
-  cg.compute(a);
-  Eigen::VectorXd x = cg.solve(b);
-  if (allFinite(x) && cg.error() <= kAcceptable) return x;
-  double error = 0;
-  x = solveIndefinite(a, b, error);
-  if (allFinite(x) && error <= kAcceptable) return x;
+// The index of entry (row, col) in a's values; the entry is in a's pattern.
+int indexOf(const Sparse& a, int row, int col) {
+  const int* rows = a.innerIndexPtr();
+  const int* first = rows + a.outerIndexPtr()[col];
+  const int* last = rows + a.outerIndexPtr()[col + 1];
+  return static_cast<int>(std::lower_bound(first, last, row) - rows);
+}
+
+bool sameShape(const Workspace& w, int n, const std::vector<ImplicitSystem::Block>& blocks,
+               const std::vector<bool>& fixed) {
+  if (w.n != n || w.keys.size() != blocks.size() || w.fixed != fixed) return false;
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    if (w.keys[k][0] != blocks[k].i || w.keys[k][1] != blocks[k].j) return false;
+  }
+  return true;
+}
+
+// A's pattern: every block's entries except the fixed particles' rows and columns, and the
+// identity's diagonal in their place; the slots; the symbolic analysis.
+void reshape(Workspace& w, int n, const std::vector<ImplicitSystem::Block>& blocks,
+             const std::vector<bool>& fixed) {
+  const auto kept = [&](const ImplicitSystem::Block& b) { return !fixed[b.i] && !fixed[b.j]; };
+  std::vector<Eigen::Triplet<double>> pattern;
+  pattern.reserve(4 * blocks.size() + 2 * n);
+  for (const auto& b : blocks) {
+    if (!kept(b)) continue;
+    for (int e = 0; e < 4; ++e) pattern.emplace_back(2 * b.i + e / 2, 2 * b.j + e % 2, 0.0);
+  }
+  for (int i = 0; i < n; ++i) {
+    if (fixed[i])
+      pattern.emplace_back(2 * i, 2 * i, 0.0), pattern.emplace_back(2 * i + 1, 2 * i + 1, 0.0);
+  }
+  w.a = Sparse(2 * n, 2 * n);
+  w.a.setFromTriplets(pattern.begin(), pattern.end());
+
+  w.slots.assign(4 * blocks.size(), -1);
+  w.keys.resize(blocks.size());
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    const auto& b = blocks[k];
+    w.keys[k] = {b.i, b.j};
+    if (!kept(b)) continue;
+    for (int e = 0; e < 4; ++e) w.slots[4 * k + e] = indexOf(w.a, 2 * b.i + e / 2, 2 * b.j + e % 2);
+  }
+  w.identity.clear();
+  for (int i = 0; i < n; ++i) {
+    if (!fixed[i]) continue;
+    w.identity.push_back(indexOf(w.a, 2 * i, 2 * i));
+    w.identity.push_back(indexOf(w.a, 2 * i + 1, 2 * i + 1));
+  }
+  w.ldlt.analyzePattern(w.a);
+  w.n = n;
+  w.fixed = fixed;
+}
+
+// A's values, summed in the order the blocks were added.
+void fill(Workspace& w, const std::vector<ImplicitSystem::Block>& blocks) {
+  double* values = w.a.valuePtr();
+  std::fill(values, values + w.a.nonZeros(), 0.0);
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    for (int e = 0; e < 4; ++e) {
+      const int slot = w.slots[4 * k + e];
+      if (slot >= 0) values[slot] += blocks[k].value(e / 2, e % 2);
+    }
+  }
+  for (const int slot : w.identity) values[slot] = 1.0;
+}
+
+bool solves(const Sparse& a, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
+  if (!x.allFinite()) return false;
+  return (a * x - b).norm() <= kAcceptable * std::max(b.norm(), 1e-300);
+}
+
+// LDLᵀ, its cost independent of the springs' stiffness; a sparse LU where a pivot vanishes or A
+// is not symmetric (LDLᵀ reads A's lower triangle only, so the residual tells).
+Eigen::VectorXd solveSymmetric(Workspace& w, const Eigen::VectorXd& b) {
+  w.ldlt.factorize(w.a);
+  if (w.ldlt.info() == Eigen::Success) {
+    Eigen::VectorXd x = w.ldlt.solve(b);
+    if (solves(w.a, x, b)) return x;
+  }
   Eigen::SparseLU<Sparse> lu;
-  lu.compute(a);
+  lu.compute(w.a);
   if (lu.info() != Eigen::Success) {
     throw std::runtime_error("ImplicitSystem::solve: the matrix is singular (" +
                              lu.lastErrorMessage() + ")");
@@ -66,17 +141,22 @@ Eigen::VectorXd solveSymmetric(const Sparse& a, const Eigen::VectorXd& b) {
 }  // namespace
 
 ImplicitSystem::ImplicitSystem(int particles)
-    : n_(particles), b_(Eigen::VectorXd::Zero(2 * particles)), fixed_(particles, false) {
+    : n_(particles), blocks_(std::move(workspace().spare)), fixed_() {
   if (particles < 0) throw std::invalid_argument("ImplicitSystem: a negative particle count");
-  entries_.reserve(static_cast<std::size_t>(particles) * 4 * 9);
+  blocks_.clear();
+  b_ = Eigen::VectorXd::Zero(2 * particles);
+  fixed_.assign(particles, false);
+}
+
+ImplicitSystem::~ImplicitSystem() {
+  std::vector<Block>& spare = workspace().spare;
+  if (blocks_.capacity() > spare.capacity()) spare = std::move(blocks_);
 }
 
 void ImplicitSystem::addBlock(int i, int j, const Mat2& block) {
   checkIndex(i, n_, "addBlock");
   checkIndex(j, n_, "addBlock");
-  for (int r = 0; r < 2; ++r) {
-    for (int c = 0; c < 2; ++c) entries_.emplace_back(2 * i + r, 2 * j + c, block(r, c));
-  }
+  blocks_.push_back({i, j, block});
 }
 
 void ImplicitSystem::addToB(int i, const Vec2& value) {
@@ -90,24 +170,16 @@ void ImplicitSystem::fix(int i) {
 }
 
 std::vector<Vec2> ImplicitSystem::solve() const {
-  // A without the fixed particles' rows and columns, and the identity in their place.
-  std::vector<Eigen::Triplet<double>> kept;
-  kept.reserve(entries_.size() + 2 * n_);
-  for (const auto& t : entries_) {
-    if (!fixed_[t.row() / 2] && !fixed_[t.col() / 2]) kept.push_back(t);
-  }
+  Workspace& w = workspace();
+  if (!sameShape(w, n_, blocks_, fixed_)) reshape(w, n_, blocks_, fixed_);
+  fill(w, blocks_);
   Eigen::VectorXd b = b_;
   for (int i = 0; i < n_; ++i) {
-    if (!fixed_[i]) continue;
-    kept.emplace_back(2 * i, 2 * i, 1.0);
-    kept.emplace_back(2 * i + 1, 2 * i + 1, 1.0);
-    b.segment<2>(2 * i).setZero();
+    if (fixed_[i]) b.segment<2>(2 * i).setZero();
   }
-  Sparse a(2 * n_, 2 * n_);
-  a.setFromTriplets(kept.begin(), kept.end());  // duplicates are summed
 
-  const Eigen::VectorXd dv = solveSymmetric(a, b);
-  if (!allFinite(dv)) throw std::runtime_error("ImplicitSystem::solve: the result is not finite");
+  const Eigen::VectorXd dv = solveSymmetric(w, b);
+  if (!dv.allFinite()) throw std::runtime_error("ImplicitSystem::solve: the result is not finite");
 
   std::vector<Vec2> out(n_);
   for (int i = 0; i < n_; ++i) out[i] = dv.segment<2>(2 * i);

@@ -124,12 +124,21 @@ void plotLines(const char* id, const std::vector<PlotSeries>& series, float heig
     ImGui::EndTooltip();
   }
 
-  // Legend with the latest values.
+  // Legend with the latest values, on as many lines as the panel's width needs.
+  const float right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
   for (std::size_t k = 0; k < series.size(); ++k) {
-    if (k > 0) ImGui::SameLine();
     const History& h = *series[k].history;
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(series[k].color), "%s %s", series[k].name,
-                       h.empty() ? "-" : number(h.last(), unit).c_str());
+    const std::string text =
+        std::string(series[k].name) + " " + (h.empty() ? "-" : number(h.last(), unit));
+    if (k > 0) {
+      ImGui::SameLine();
+      if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x +
+              ImGui::CalcTextSize(text.c_str()).x >
+          right) {
+        ImGui::NewLine();
+      }
+    }
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(series[k].color), "%s", text.c_str());
   }
   ImGui::PopID();
 }

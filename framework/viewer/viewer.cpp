@@ -70,6 +70,7 @@ bool sliderDouble(const char* label, double* value, double lo, double hi, const 
 Viewer::Viewer(Options options) : options_(std::move(options)) {
   panelVisible_ = options_.gui;
   running_ = !options_.paused;
+  sideBySide_ = options_.sideBySide;
 }
 
 Viewer::~Viewer() { close(); }
@@ -157,6 +158,8 @@ void Viewer::resetScene(const SceneParams& params) {
   params_ = params;
   error_.clear();
   grabbing_ = false;
+  twin_.reset();
+  twinTotal_.clear();
   pending_ = 0;
   kinetic_.clear(), potential_.clear(), total_.clear();
   simulateMs_.clear(), drawMs_.clear();
@@ -177,6 +180,36 @@ void Viewer::resetScene(const SceneParams& params) {
   }
   // The new scene's view, for the mouse, before its first frame is drawn.
   guarded([&] { snapshot_ = scene_->snapshot(); });
+  resetTwin();
+}
+
+SceneParams Viewer::twinParams() const {
+  SceneParams p = params_;
+  p.implicit = !p.implicit;
+  return p;
+}
+
+// The twin, from frame 0 like the scene, where side by side is asked for and the scene has the
+// integrator switch.
+void Viewer::resetTwin() {
+  twin_.reset();
+  twinTotal_.clear();
+  const SceneInfo* info = sceneInfo(sceneName_);
+  if (!sideBySide_ || !scene_ || !error_.empty() || !info || !(info->uses & kUsesIntegrator)) {
+    return;
+  }
+  std::unique_ptr<Scene> twin;
+  const std::string message = guarded([&] {
+    twin = makeScene(sceneName_);
+    if (twin) twin->reset(twinParams());
+  });
+  if (!message.empty() || !twin) {
+    return fail("building " + sceneName_ + " with the other integrator", message);
+  }
+  twin_ = std::move(twin);
+  SceneEnergy e;
+  if (guarded([&] { e = twin_->energy(); }).empty()) twinTotal_.push(e.total());
+  guarded([&] { twinSnapshot_ = twin_->snapshot(); });
 }
 
 void Viewer::applyParams(const SceneParams& params) {
@@ -190,6 +223,8 @@ void Viewer::applyParams(const SceneParams& params) {
     fail("changing the parameters", message);
   } else if (tuned) {
     params_ = scene_->params();
+    if (twin_ && !guarded([&] { tuned = twin_->tune(twinParams()); }).empty()) tuned = false;
+    if (twin_ && !tuned) resetScene(params_);  // both again from frame 0
   } else {
     resetScene(params);  // n, the spring sets or the seed: the scene must be rebuilt
   }
@@ -202,6 +237,16 @@ bool Viewer::advance() {
   if (!message.empty()) {
     fail("frame " + std::to_string(scene_->frame() + 1), message);
     return false;
+  }
+  if (twin_) {
+    const std::string twinMessage = guarded([&] { twin_->advanceFrame(); });
+    if (!twinMessage.empty()) {
+      fail("frame " + std::to_string(twin_->frame() + 1) + " with the other integrator",
+           twinMessage);
+      return false;
+    }
+    SceneEnergy e;
+    if (guarded([&] { e = twin_->energy(); }).empty()) twinTotal_.push(e.total());
   }
   if (draws_ > 2) {  // the first draws compile llvmpipe's shaders: their spike would set the scale
     simulateMs_.push(millisecondsSince(start));
@@ -228,6 +273,23 @@ int Viewer::sceneWidth() const {
 
 int Viewer::sceneHeight() const { return context_->height(); }
 
+Scene& Viewer::viewScene(int k) const {
+  if (!twin_) return *scene_;
+  const bool sceneOnLeft = !params_.implicit;
+  return (k == 0) == sceneOnLeft ? *scene_ : *twin_;
+}
+
+const Snapshot& Viewer::viewSnapshot(int k) const {
+  return &viewScene(k) == scene_.get() ? snapshot_ : twinSnapshot_;
+}
+
+int Viewer::viewLeft(int k) const { return k == 0 ? 0 : sceneWidth() / 2; }
+
+int Viewer::viewWidth(int k) const {
+  if (!twin_) return sceneWidth();
+  return k == 0 ? sceneWidth() / 2 : sceneWidth() - sceneWidth() / 2;
+}
+
 float Viewer::panelWidth() const { return kPanelWidth; }
 
 void Viewer::handleMouse() {
@@ -249,18 +311,23 @@ void Viewer::handleMouse() {
                    cy * context_->height() / std::max(wh, 1));
   const int w = sceneWidth(), h = sceneHeight();
   if (w <= 0 || h <= 0) return;
-  const Vec2 world = ViewTransform(snapshot_.view, w, h).toWorld(pixel);
   const bool overScene = pixel.x() >= 0 && pixel.x() < w && pixel.y() >= 0 && pixel.y() < h &&
                          !(panelVisible_ && ImGui::GetIO().WantCaptureMouse);
+  // Side by side, the view pressed in is the one dragged until the button is released.
+  if (pressed) grabbedView_ = views() == 2 && pixel.x() >= viewLeft(1) ? 1 : 0;
+  const int k = grabbedView_;
+  Scene& scene = viewScene(k);
+  const Vec2 world =
+      ViewTransform(viewSnapshot(k).view, viewWidth(k), h).toWorld(pixel - Vec2(viewLeft(k), 0));
 
   std::string message;
   if (pressed && overScene) {
-    message = guarded([&] { grabbing_ = scene_->grab(world); });
+    message = guarded([&] { grabbing_ = scene.grab(world); });
   } else if (down && grabbing_) {
-    message = guarded([&] { scene_->drag(world); });
+    message = guarded([&] { scene.drag(world); });
   } else if (!down && grabbing_) {
     grabbing_ = false;
-    message = guarded([&] { scene_->release(); });
+    message = guarded([&] { scene.release(); });
   }
   if (!message.empty()) fail("dragging with the mouse", message);
 }
@@ -301,6 +368,10 @@ void Viewer::drawScene() {
   } else {
     snapshot_ = Snapshot();
   }
+  if (twin_) {
+    const std::string message = guarded([&] { twinSnapshot_ = twin_->snapshot(); });
+    if (!message.empty()) fail("taking a snapshot with the other integrator", message);
+  }
   const int w = sceneWidth(), h = sceneHeight();
   if (w <= 0 || h <= 0) {
     const Rgba bg = palette::kBackground;
@@ -309,7 +380,10 @@ void Viewer::drawScene() {
     return;
   }
   const Clock::time_point start = Clock::now();
-  if (!renderer_->draw(snapshot_, w, h, render_)) status_ = renderer_->error();
+  for (int k = 0; k < (scene_ ? views() : 1); ++k) {
+    const Snapshot& shot = scene_ ? viewSnapshot(k) : snapshot_;
+    if (!renderer_->draw(shot, viewWidth(k), h, render_, viewLeft(k))) status_ = renderer_->error();
+  }
   gl.Finish();  // so the time measured is the drawing's, not just its submission's
   lastDrawMs_ = millisecondsSince(start);
   ++draws_;
@@ -335,6 +409,7 @@ int Viewer::run() {
     drawScene();
     if (gui) {
       drawPanel();
+      drawViewLabels();
       if (grabbing_) {  // a ring at the cursor while something is held
         ImGui::GetForegroundDrawList()->AddCircle(ImGui::GetIO().MousePos, 9,
                                                   IM_COL32(220, 40, 30, 255), 0, 2);
@@ -368,6 +443,26 @@ int Viewer::run() {
   }
   close();
   return exitCode;
+}
+
+// Side by side: each view's integrator over it, and a line between the two.
+void Viewer::drawViewLabels() {
+  if (!twin_) return;
+  int ww = 1, wh = 1;
+  glfwGetWindowSize(context_->window(), &ww, &wh);
+  const float scale = static_cast<float>(ww) / std::max(context_->width(), 1);  // fb -> window
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  const float middle = viewLeft(1) * scale;
+  draw->AddLine(ImVec2(middle, 0), ImVec2(middle, static_cast<float>(wh)),
+                IM_COL32(90, 90, 90, 255), 2);
+  const int substeps = params_.substeps;
+  for (int k = 0; k < 2; ++k) {
+    const bool implicit = viewScene(k).params().implicit;
+    const std::string label =
+        std::string(implicit ? "implicit Euler (task 7), " : "symplectic Euler (task 3), ") +
+        std::to_string(substeps) + (substeps == 1 ? " step" : " steps") + " per frame";
+    draw->AddText(ImVec2(viewLeft(k) * scale + 8, 6), IM_COL32(40, 40, 40, 255), label.c_str());
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -488,6 +583,14 @@ void Viewer::parameterSection() {
       ImGui::SetTooltip("stepImplicit: one backward Euler step per substep, stable at any dt");
     }
     p.implicit = integrator == 1;
+    // Both at once: the twin runs the other integrator beside the scene, from frame 0.
+    if (ImGui::Checkbox("side by side", &sideBySide_)) {
+      resetScene(p);
+      return;
+    }
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("The scene twice: symplectic Euler left, implicit Euler right");
+    }
   }
   if (uses & kUsesDt) {
     sliderDouble("dt (s)", &p.dt, 0.001, 0.1, "%.4f", true,
@@ -578,18 +681,22 @@ void Viewer::energySection() {
   if (!ImGui::CollapsingHeader("Energy", ImGuiTreeNodeFlags_DefaultOpen)) return;
   // An explosion (1e30 J) flattens everything else: switch to the log scale once per run.
   if (!energyLogAuto_) {
-    for (float v : total_.values()) {
-      if (!(std::abs(v) < 1e6f)) {  // also NaN
-        energyLog_ = energyLogAuto_ = true;
-        break;
+    for (const History* history : {&total_, &twinTotal_}) {
+      for (float v : history->values()) {
+        if (!(std::abs(v) < 1e6f)) energyLog_ = energyLogAuto_ = true;  // also NaN
       }
     }
   }
-  plotLines("energy",
-            {{"kinetic", &kinetic_, IM_COL32(90, 160, 255, 255)},
-             {"potential", &potential_, IM_COL32(255, 150, 40, 255)},
-             {"total", &total_, IM_COL32(235, 235, 235, 255)}},
-            110, "J", false, energyLog_);
+  std::vector<PlotSeries> series = {{"kinetic", &kinetic_, IM_COL32(90, 160, 255, 255)},
+                                    {"potential", &potential_, IM_COL32(255, 150, 40, 255)},
+                                    {"total", &total_, IM_COL32(235, 235, 235, 255)}};
+  if (twin_) {  // side by side: the kinetic and potential energies are the scene's
+    const bool implicit = params_.implicit;
+    series[2].name = implicit ? "total, implicit" : "total, symplectic";
+    series.push_back({implicit ? "total, symplectic" : "total, implicit", &twinTotal_,
+                      IM_COL32(120, 220, 120, 255)});
+  }
+  plotLines("energy", series, 110, "J", false, energyLog_);
   ImGui::Checkbox("log scale", &energyLog_);
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");

@@ -9,6 +9,10 @@
 //   |                                      | energy plot |
 //   +--------------------------------------+-------------+
 //
+// Side by side (task 7's scenes, --side-by-side or the panel's checkbox): the scene area holds
+// two views of the same scene, run in lockstep with the same parameters, symplectic Euler (task
+// 3) on the left and implicit Euler (task 7) on the right; the energy plot shows both totals.
+//
 // Design notes
 // - The scene area sits at the window's left edge and spans its height, so Renderer::draw's
 //   viewport (0, 0, w, h) is exactly that area, and its pixels are the headless renderer's.
@@ -54,6 +58,16 @@ class Viewer {
   bool advance();
   void fail(const std::string& what, const std::string& message);
 
+  // Side by side: the twin is the scene again with the other integrator.
+  void resetTwin();
+  SceneParams twinParams() const;
+  int views() const { return twin_ ? 2 : 1; }
+  Scene& viewScene(int k) const;  ///< 0: left (symplectic when side by side), 1: right
+  const Snapshot& viewSnapshot(int k) const;
+  int viewLeft(int k) const;  ///< framebuffer pixels
+  int viewWidth(int k) const;
+  void drawViewLabels();
+
   // One display frame.
   void handleMouse();
   void simulate();
@@ -90,6 +104,12 @@ class Viewer {
   SceneParams params_;  ///< what the sliders show (= scene_->params() unless it failed)
   RenderOptions render_;
   Snapshot snapshot_;  ///< the picture drawn last
+
+  bool sideBySide_ = false;      ///< asked for; a twin exists only in scenes with the switch
+  std::unique_ptr<Scene> twin_;  ///< the scene with the other integrator, side by side
+  Snapshot twinSnapshot_;
+  History twinTotal_;
+  int grabbedView_ = 0;
 
   bool running_ = true;
   int stepRequests_ = 0;  ///< single steps asked for while paused

@@ -77,6 +77,9 @@ ParseResult parseOptions(const std::vector<std::string>& args) {
     } else if (name == "--paused") {
       if (!noValue()) return result;
       o.paused = true;
+    } else if (name == "--side-by-side") {
+      if (!noValue()) return result;
+      o.sideBySide = true;
     } else if (name == "--no-vsync") {
       if (!noValue()) return result;
       o.vsync = false;
@@ -107,6 +110,8 @@ Options:
   --no-gui           no control panel: the window shows the scene only (then a --frames
                      screenshot equals the headless render of the same frame)
   --paused           start paused
+  --side-by-side     in a scene with an integrator switch (task 7): the scene twice, with
+                     symplectic Euler on the left and implicit Euler on the right
   --no-vsync         do not wait for the display between frames
   --list             print the scene names and exit
   --help             this text

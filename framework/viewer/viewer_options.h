@@ -2,7 +2,7 @@
 // a handful of options).
 //
 //   a6_viewer [--scene NAME] [--size WxH] [--frames N] [--screenshot PATH] [--no-gui]
-//             [--paused] [--no-vsync] [--list] [--help]
+//             [--paused] [--side-by-side] [--no-vsync] [--list] [--help]
 #pragma once
 
 #include <string>
@@ -17,6 +17,7 @@ struct Options {
   std::string screenshot;             ///< where --frames saves (default <scene>_frame<N>.png)
   bool gui = true;                    ///< false: no ImGui panel (the window shows the scene only)
   bool paused = false;                ///< start paused
+  bool sideBySide = false;            ///< both integrators at once, in scenes that have the switch
   bool vsync = true;
   bool list = false;  ///< print the scene names and exit
   bool help = false;  ///< print the usage and exit

@@ -1,8 +1,8 @@
 // Checks a screenshot saved by `a6_viewer --frames N` against the headless renderer:
 //
 //   a6_viewer_check --scene NAME --frames N --screenshot PATH [--scene-area WxH]
-//                   [--tolerance T] [--max-fraction F] [--allow-blank-reference] [--lossy]
-//                   [--out DIR]
+//                   [--view-left X] [--other-integrator] [--tolerance T] [--max-fraction F]
+//                   [--allow-blank-reference] [--lossy] [--out DIR]
 //
 // 1. The scene area (the whole screenshot, or its top-left WxH with the panel to the right of
 //    it) is a real picture: several distinct colours, not all background, and every colour
@@ -12,10 +12,14 @@
 //    channel within T of it on all but a fraction F of the pixels.
 // 3. With --scene-area, the panel (what lies right of the scene area) is there: not a flat
 //    colour.
+// --view-left X: the scene area starts X pixels from the left (a view of --side-by-side), and
+// there is no panel check. --other-integrator: the reference runs the scene with the other
+// integrator (SceneParams::implicit flipped), as the viewer's twin does side by side.
 // --lossy: the screenshot went through a lossy codec (the browser desktop's VNC sends JPEG), so
 // the exact-colour count of 1 is skipped and 2 is read with the tolerance and fraction given.
 // Prints the measured difference. With --out, writes reference.png and difference.png there.
 // Exit code: 0 pass, 1 fail, 2 bad arguments.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -80,9 +84,9 @@ bool parseSize(const std::string& text, int* w, int* h) {
 
 int main(int argc, char** argv) {
   std::string sceneName, screenshot, out;
-  int frames = -1, areaW = 0, areaH = 0, tolerance = 2;
+  int frames = -1, areaW = 0, areaH = 0, tolerance = 2, viewLeft = -1;
   double maxFraction = 0.001;
-  bool allowBlankReference = false, lossy = false;
+  bool allowBlankReference = false, lossy = false, otherIntegrator = false;
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
     auto value = [&]() -> std::string {
@@ -108,6 +112,10 @@ int main(int argc, char** argv) {
       allowBlankReference = true;
     else if (a == "--lossy")
       lossy = true;
+    else if (a == "--view-left")
+      viewLeft = std::atoi(value().c_str());
+    else if (a == "--other-integrator")
+      otherIntegrator = true;
     else if (a == "--scene-area") {
       if (!parseSize(value(), &areaW, &areaH)) {
         std::fprintf(stderr, "--scene-area: expected WxH\n");
@@ -121,7 +129,8 @@ int main(int argc, char** argv) {
   if (sceneName.empty() || screenshot.empty() || frames < 0) {
     std::fprintf(stderr,
                  "usage: %s --scene NAME --frames N --screenshot PATH [--scene-area WxH] "
-                 "[--tolerance T] [--max-fraction F] [--allow-blank-reference] [--out DIR]\n",
+                 "[--view-left X] [--other-integrator] [--tolerance T] [--max-fraction F] "
+                 "[--allow-blank-reference] [--lossy] [--out DIR]\n",
                  argv[0]);
     return 2;
   }
@@ -134,12 +143,13 @@ int main(int argc, char** argv) {
   }
   const Image& window = shot.image;
   if (areaW == 0) areaW = window.width, areaH = window.height;
-  if (areaW > window.width || areaH > window.height) {
+  const int left = std::max(viewLeft, 0);
+  if (left + areaW > window.width || areaH > window.height) {
     std::printf("FAIL: the screenshot is %dx%d, smaller than the scene area %dx%d\n", window.width,
                 window.height, areaW, areaH);
     return 1;
   }
-  const Image area = crop(window, 0, 0, areaW, areaH);
+  const Image area = crop(window, left, 0, areaW, areaH);
   std::printf("screenshot %s: %dx%d, scene area %dx%d\n", screenshot.c_str(), window.width,
               window.height, areaW, areaH);
 
@@ -160,6 +170,11 @@ int main(int argc, char** argv) {
     if (!scene) {
       std::printf("FAIL: unknown scene '%s'\n", sceneName.c_str());
       return 1;
+    }
+    if (otherIntegrator) {
+      SceneParams params = scene->params();
+      params.implicit = !params.implicit;
+      scene->reset(params);
     }
     for (int k = 0; k < frames; ++k) scene->advanceFrame();
     reference = renderer.render(scene->snapshot(), areaW, areaH, RenderOptions());
@@ -225,7 +240,7 @@ int main(int argc, char** argv) {
   }
 
   // 3. The panel, when there is one.
-  if (areaW < window.width) {
+  if (viewLeft < 0 && areaW < window.width) {
     const Image panel = crop(window, areaW, 0, window.width - areaW, window.height);
     const std::size_t colours = histogram(panel).size();
     std::printf("panel: %dx%d, %zu colours\n", panel.width, panel.height, colours);

@@ -16,6 +16,14 @@ TEST(ViewerOptions, DefaultsWithoutArguments) {
   EXPECT_EQ(r.options.height, 600);
   EXPECT_EQ(r.options.frames, -1);
   EXPECT_TRUE(r.options.gui);
+  EXPECT_FALSE(r.options.sideBySide);
+}
+
+TEST(ViewerOptions, SideBySide) {
+  const ParseResult r = parse({"--scene", "stiff_cloth_implicit", "--side-by-side"});
+  ASSERT_TRUE(r) << r.error;
+  EXPECT_TRUE(r.options.sideBySide);
+  EXPECT_FALSE(parse({"--side-by-side=yes"}));
 }
 
 TEST(ViewerOptions, SmokeTestCommandLine) {
@@ -52,7 +60,7 @@ TEST(ViewerOptions, BadValuesAreErrorsThatSayWhy) {
 TEST(ViewerOptions, UsageNamesEveryOptionAndKey) {
   const std::string text = usage("a6_viewer");
   for (const char* word : {"--scene", "--size", "--frames", "--screenshot", "--no-gui", "--list",
-                           "Space", "Shift+S", "Esc"}) {
+                           "--side-by-side", "Space", "Shift+S", "Esc"}) {
     EXPECT_NE(text.find(word), std::string::npos) << word;
   }
 }

@@ -2,12 +2,16 @@
 # The viewer's smoke test: runs a6_viewer on a private Xvfb display for a fixed number of
 # frames, saves a screenshot, and checks it against the headless render of the same frame.
 #
-#   viewer_smoke.sh VIEWER CHECKER OUTDIR SCENE FRAMES WxH gui|no-gui [checker options...]
+#   viewer_smoke.sh VIEWER CHECKER OUTDIR SCENE FRAMES WxH gui|no-gui|side-by-side [checker options...]
+#
+# side-by-side: --no-gui --side-by-side; the left half is checked against the headless render
+# with the other integrator than the scene's default (the scene's default is implicit), the
+# right half against the scene's own.
 #
 # Exit code: 0 pass, 1 fail, 77 skipped (no Xvfb installed).
 set -u
 if [ $# -lt 7 ]; then
-  echo "usage: $0 VIEWER CHECKER OUTDIR SCENE FRAMES WxH gui|no-gui [checker options...]" >&2
+  echo "usage: $0 VIEWER CHECKER OUTDIR SCENE FRAMES WxH gui|no-gui|side-by-side [checker options...]" >&2
   exit 2
 fi
 viewer=$1 checker=$2 outdir=$3 scene=$4 frames=$5 size=$6 gui=$7
@@ -43,6 +47,8 @@ args=(--scene "$scene" --frames "$frames" --size "$size" --screenshot "$shot")
 checkargs=()
 if [ "$gui" = no-gui ]; then
   args+=(--no-gui)
+elif [ "$gui" = side-by-side ]; then
+  args+=(--no-gui --side-by-side)
 else
   checkargs+=(--scene-area "$size")
 fi
@@ -54,5 +60,17 @@ if [ $status -ne 0 ] || [ ! -f "$shot" ]; then
   exit 1
 fi
 
+if [ "$gui" = side-by-side ]; then
+  width=${size%x*} height=${size#*x}
+  half=$((width / 2))
+  mkdir -p "$outdir/left" "$outdir/right"
+  echo "left half: symplectic Euler"
+  "$checker" --scene "$scene" --frames "$frames" --screenshot "$shot" --out "$outdir/left" \
+    --scene-area "${half}x$height" --view-left 0 --other-integrator "$@" || exit 1
+  echo "right half: implicit Euler"
+  "$checker" --scene "$scene" --frames "$frames" --screenshot "$shot" --out "$outdir/right" \
+    --scene-area "$((width - half))x$height" --view-left "$half" "$@"
+  exit
+fi
 "$checker" --scene "$scene" --frames "$frames" --screenshot "$shot" --out "$outdir" \
   "${checkargs[@]}" "$@"
