@@ -46,8 +46,8 @@ Both chain(int n, double mass, double scale, double transverse, unsigned seed) {
   }
   for (int i = 0; i + 1 < n; ++i) {
     const Vec2 e = Vec2(uniform(random), uniform(random)).normalized();
-    const Mat2 eeT = e * e.transpose();
-    const Mat2 k = scale * (eeT + transverse * (Mat2::Identity() - eeT));
+    const Mat2 outer = e * e.transpose();
+    const Mat2 k = scale * (outer + transverse * (Mat2::Identity() - outer));
     both.addBlock(i, i, k), both.addBlock(i + 1, i + 1, k);
     both.addBlock(i, i + 1, -k), both.addBlock(i + 1, i, -k);
   }
