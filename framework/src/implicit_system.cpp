@@ -32,9 +32,18 @@ void checkIndex(int i, int n, const char* what) {
   }
 }
 
+// Whether this thread's Workspace exists: an ImplicitSystem destroyed after it (a static one, at
+// exit) must not hand its buffer to it. Trivially destructible, so it outlives every object.
+thread_local bool workspaceAlive = false;
+
 // What a thread keeps from its last solve (see the top of this file).
 struct Workspace {
-  int n = -1;
+  Workspace() { workspaceAlive = true; }
+  ~Workspace() { workspaceAlive = false; }
+  Workspace(const Workspace&) = delete;
+  Workspace& operator=(const Workspace&) = delete;
+
+  int n = -1;                            ///< -1: no shape (none yet, or its making was interrupted)
   std::vector<std::array<int, 2>> keys;  // (i, j) of every block, in the order added
   std::vector<bool> fixed;
   std::vector<int> slots;     // 4 per block, (r, c) row-major: its index in a's values, or -1
@@ -70,6 +79,7 @@ bool sameShape(const Workspace& w, int n, const std::vector<ImplicitSystem::Bloc
 // identity's diagonal in their place; the slots; the symbolic analysis.
 void reshape(Workspace& w, int n, const std::vector<ImplicitSystem::Block>& blocks,
              const std::vector<bool>& fixed) {
+  w.n = -1;  // until the end: a throw (bad_alloc) halfway leaves no shape to match
   const auto kept = [&](const ImplicitSystem::Block& b) { return !fixed[b.i] && !fixed[b.j]; };
   std::vector<Eigen::Triplet<double>> pattern;
   pattern.reserve(4 * blocks.size() + 2 * n);
@@ -140,15 +150,16 @@ Eigen::VectorXd solveSymmetric(Workspace& w, const Eigen::VectorXd& b) {
 
 }  // namespace
 
-ImplicitSystem::ImplicitSystem(int particles)
-    : n_(particles), blocks_(std::move(workspace().spare)), fixed_() {
+ImplicitSystem::ImplicitSystem(int particles) : n_(particles) {
   if (particles < 0) throw std::invalid_argument("ImplicitSystem: a negative particle count");
+  blocks_ = std::move(workspace().spare);
   blocks_.clear();
   b_ = Eigen::VectorXd::Zero(2 * particles);
   fixed_.assign(particles, false);
 }
 
 ImplicitSystem::~ImplicitSystem() {
+  if (!workspaceAlive) return;
   std::vector<Block>& spare = workspace().spare;
   if (blocks_.capacity() > spare.capacity()) spare = std::move(blocks_);
 }

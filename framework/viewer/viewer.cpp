@@ -221,11 +221,9 @@ void Viewer::applyParams(const SceneParams& params) {
   const std::string message = guarded([&] { tuned = scene_->tune(params); });
   if (!message.empty()) {
     fail("changing the parameters", message);
-  } else if (tuned) {
+  } else if (tuned && !twin_) {
     params_ = scene_->params();
-    if (twin_ && !guarded([&] { tuned = twin_->tune(twinParams()); }).empty()) tuned = false;
-    if (twin_ && !tuned) resetScene(params_);  // both again from frame 0
-  } else {
+  } else {               // side by side, every change restarts both from frame 0, to compare them
     resetScene(params);  // n, the spring sets or the seed: the scene must be rebuilt
   }
 }

@@ -15,7 +15,8 @@
 //
 // Design notes
 // - The scene area sits at the window's left edge and spans its height, so Renderer::draw's
-//   viewport (0, 0, w, h) is exactly that area, and its pixels are the headless renderer's.
+//   viewport (0, 0, w, h) is exactly that area, and its pixels are the headless renderer's (side
+//   by side: (0, 0, w/2, h) and (w/2, 0, w - w/2, h), each a headless render of its size).
 // - Student code runs in makeScene, reset, advanceFrame and the mouse calls: every call is
 //   guarded, an exception pauses the scene and shows its message in the panel.
 // - Frames are paced to real time (one frame every params.dt seconds, at most a few per

@@ -36,13 +36,14 @@ struct Both {
 
 // A chain of n particles of mass `mass` joined by springs with the block K = `scale` (e eᵀ +
 // `transverse` (I - e eᵀ)) in random directions, assembled as stepImplicit does; random b.
-Both chain(int n, double mass, double scale, double transverse, unsigned seed) {
+Both chain(int n, double mass, double scale, double transverse, unsigned seed, bool withB = true) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> uniform(-1, 1);
   Both both(n);
   for (int i = 0; i < n; ++i) {
     both.addBlock(i, i, mass * Mat2::Identity());
-    both.addToB(i, Vec2(uniform(random), uniform(random)));
+    const Vec2 b(uniform(random), uniform(random));
+    if (withB) both.addToB(i, b);
   }
   for (int i = 0; i + 1 < n; ++i) {
     const Vec2 e = Vec2(uniform(random), uniform(random)).normalized();
@@ -113,6 +114,7 @@ TEST(ImplicitSystem, ShapesKeptOrChangedBetweenSolvesGiveTheSameAnswers) {
   EXPECT_EQ(flat(first.system.solve()), cold) << "the same system, solved twice";
 
   const Both sameShape = chain(10, 0.02, 900, -0.01, 6);  // the same blocks, other values
+  const Eigen::VectorXd reused = flat(sameShape.system.solve());
   expectSolves(sameShape, sameShape.system.solve());
   const Both longer = chain(11, 0.01, 50, 0.3, 7);
   expectSolves(longer, longer.system.solve());
@@ -124,7 +126,15 @@ TEST(ImplicitSystem, ShapesKeptOrChangedBetweenSolvesGiveTheSameAnswers) {
   fewer.b.segment<2>(18).setZero();
   expectSolves(fewer, fewer.system.solve());
 
+  EXPECT_EQ(flat(sameShape.system.solve()), reused)
+      << "a system solved with the shape of the one before, and again with its shape made anew";
   EXPECT_EQ(flat(first.system.solve()), cold) << "the first system again, after other shapes";
+}
+
+TEST(ImplicitSystem, NoParticlesAndAZeroRightHandSide) {
+  EXPECT_TRUE(ImplicitSystem(0).solve().empty());
+  const Both still = chain(7, 0.01, 50, 0.3, 9, /*withB=*/false);
+  for (const Vec2& dv : still.system.solve()) EXPECT_EQ(dv, Vec2::Zero());
 }
 
 TEST(ImplicitSystem, BlocksAddedInAnotherOrderGiveTheSameAnswer) {

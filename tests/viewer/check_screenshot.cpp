@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (sceneName.empty() || screenshot.empty() || frames < 0) {
+  if (sceneName.empty() || screenshot.empty() || frames < 0 || (viewLeft >= 0 && areaW == 0)) {
     std::fprintf(stderr,
                  "usage: %s --scene NAME --frames N --screenshot PATH [--scene-area WxH] "
                  "[--view-left X] [--other-integrator] [--tolerance T] [--max-fraction F] "
