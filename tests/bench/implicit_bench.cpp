@@ -1,8 +1,9 @@
 // Benchmark: what task 7's implicit Euler costs on a stiff cloth. Per simulated second of the
-// stiff cloth (n x n cells, ks = 2000 N/m, ten times the cloth scenes' 200, and 20000), the
-// solution's stepImplicit at one 1/60 s step per frame against the solution's symplectic step()
-// with the fewest substeps per frame that keep it stable, found by search in this binary first. The
-// implicit step's time is also split into assembly (forces, Jacobians, blocks) and solve.
+// stiff cloth (n x n cells, n = 32 and 64; ks from 2000 N/m, ten times the cloth scenes' 200, to
+// 2e8 N/m, a nearly inextensible cloth), the solution's stepImplicit at one 1/60 s step per frame
+// against the solution's symplectic step() with the fewest substeps per frame that keep it
+// stable, found by search in this binary first. The implicit step's time is also split into
+// assembly (forces, Jacobians, blocks) and solve.
 //
 // Run it from a Release build (see tests/bench/README.md):
 //   a6_implicit_bench --benchmark_out=implicit.json --benchmark_out_format=json
@@ -22,8 +23,8 @@ namespace {
 constexpr double kFrame = 1.0 / 60;  // s
 constexpr int kFramesPerSecond = 60;
 
-// The stiff cloth: structural and shear springs of 2000 N/m on 10 g particles, top corners
-// pinned, gravity on, released flat so that it swings.
+// The stiff cloth: structural and shear springs of ks on 10 g particles, top corners pinned,
+// gravity on, released flat so that it swings.
 a6::MassSpringSystem stiffCloth(int n, double ks) {
   a6::MassSpringSystem system;
   system.env.gravity = a6::Vec2(0, -9.81);
@@ -38,31 +39,49 @@ a6::MassSpringSystem stiffCloth(int n, double ks) {
   return system;
 }
 
-// Stable: after one simulated second every particle is finite, slower than 20 m/s, and every
-// spring shorter than twice its rest length.
+// Stable: after one simulated second every particle is finite and slower than 20 m/s (a second's
+// free fall is 9.8 m/s), and every spring shorter than ten times its rest length (the softest
+// cloth here, n = 64 at 2000 N/m, hangs with its corner springs at 3.4 times theirs: that is
+// physics, not instability).
 bool stable(const a6::MassSpringSystem& system) {
   for (const a6::Particle& p : system.particles) {
     if (!p.x.allFinite() || !(p.v.norm() < 20)) return false;
   }
   for (const a6::Spring& s : system.springs) {
-    if (!((s.p2->x - s.p1->x).norm() < 2 * s.restLength)) return false;
+    if (!((s.p2->x - s.p1->x).norm() < 10 * s.restLength)) return false;
   }
   return true;
 }
 
+// Blown up: a particle not finite or faster than 1 km/s; the search stops such a run early.
+bool blownUp(const a6::MassSpringSystem& system) {
+  for (const a6::Particle& p : system.particles) {
+    if (!(p.v.norm() < 1000)) return true;
+  }
+  return false;
+}
+
 bool stableWith(int n, double ks, int substeps) {
   a6::MassSpringSystem system = stiffCloth(n, ks);
-  for (int f = 0; f < kFramesPerSecond; ++f) system.advance(kFrame, substeps);
+  for (int f = 0; f < kFramesPerSecond; ++f) {
+    system.advance(kFrame, substeps);
+    if (blownUp(system)) return false;
+  }
   return stable(system);
 }
 
 // The fewest substeps per frame that keep the symplectic cloth stable for a second (doubling,
 // then bisection), found once per (n, ks).
+constexpr int kMostSubsteps = 1 << 14;
+
 int fewestStableSubsteps(int n, double ks) {
   static std::map<std::pair<int, double>, int> found;
   if (const auto it = found.find({n, ks}); it != found.end()) return it->second;
   int hi = 1;
-  while (!stableWith(n, ks, hi)) hi *= 2;
+  while (!stableWith(n, ks, hi)) {
+    hi *= 2;
+    if (hi > kMostSubsteps) return found[{n, ks}] = 0;  // none: the benchmark says so
+  }
   int lo = hi / 2;  // unstable (or 0)
   while (hi - lo > 1) {
     const int mid = (lo + hi) / 2;
@@ -75,6 +94,10 @@ void BM_SymplecticSecond(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const double ks = static_cast<double>(state.range(1));
   const int substeps = fewestStableSubsteps(n, ks);
+  if (substeps == 0) {
+    state.SkipWithError("no substep count up to 16384 keeps this cloth stable for a second");
+    return;
+  }
   for (auto _ : state) {
     a6::MassSpringSystem system = stiffCloth(n, ks);
     for (int f = 0; f < kFramesPerSecond; ++f) system.advance(kFrame, substeps);
@@ -144,8 +167,10 @@ void BM_ImplicitSolve(benchmark::State& state) {
   }
 }
 
-// (n, ks): 32 and 64 cells per side; 2000 and 20000 N/m.
-#define A6_CLOTHS ArgsProduct({{32, 64}, {2000, 20000}})->Unit(benchmark::kMillisecond)
+// (n, ks): 32 and 64 cells per side; 10 to 1e6 times the cloth scenes' 200 N/m.
+const std::vector<int64_t> kSides = {32, 64};
+const std::vector<int64_t> kStiffnesses = {2000, 20000, 200000, 2000000, 20000000, 200000000};
+#define A6_CLOTHS ArgsProduct({kSides, kStiffnesses})->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_SymplecticSecond)->A6_CLOTHS;
 BENCHMARK(BM_ImplicitSecond)->A6_CLOTHS;
 BENCHMARK(BM_ImplicitAssembly)->A6_CLOTHS;
@@ -160,20 +185,25 @@ class Ratios : public benchmark::ConsoleReporter {
   }
   void Finalize() override {
     ConsoleReporter::Finalize();
-    for (const auto& [n, ks] : {std::pair{32, 2000}, {32, 20000}, {64, 2000}, {64, 20000}}) {
-      const auto at = [&, n = n, ks = ks](const char* name) {
-        return times_["BM_" + std::string(name) + "/" + std::to_string(n) + "/" +
-                      std::to_string(ks)];
-      };
-      const double symplectic = at("SymplecticSecond"), implicit = at("ImplicitSecond");
-      const double assembly = at("ImplicitAssembly"), solve = at("ImplicitSolve");
-      if (implicit <= 0) continue;
-      std::printf(
-          "n = %d, ks = %d N/m: symplectic with %d substeps per frame / implicit with 1 step per "
-          "frame = %.3fx per simulated second; implicit time: assembly %.0f%%, solve %.0f%%\n",
-          n, ks, fewestStableSubsteps(n, ks), symplectic / implicit,
-          100 * assembly / (assembly + solve), 100 * solve / (assembly + solve));
+    for (const int64_t n : kSides) {
+      for (const int64_t ks : kStiffnesses) print(n, ks);
     }
+  }
+
+ private:
+  void print(int64_t n, int64_t ks) {
+    const auto at = [&](const char* name) {
+      return times_["BM_" + std::string(name) + "/" + std::to_string(n) + "/" + std::to_string(ks)];
+    };
+    const double symplectic = at("SymplecticSecond"), implicit = at("ImplicitSecond");
+    const double assembly = at("ImplicitAssembly"), solve = at("ImplicitSolve");
+    if (symplectic <= 0 || implicit <= 0) return;
+    std::printf(
+        "n = %d, ks = %lld N/m: symplectic with %d substeps per frame / implicit with 1 step per "
+        "frame = %.3fx per simulated second; implicit time: assembly %.0f%%, solve %.0f%%\n",
+        static_cast<int>(n), static_cast<long long>(ks),
+        fewestStableSubsteps(static_cast<int>(n), static_cast<double>(ks)), symplectic / implicit,
+        100 * assembly / (assembly + solve), 100 * solve / (assembly + solve));
   }
 
  private:
