@@ -174,13 +174,19 @@ void Viewer::resetScene(const SceneParams& params) {
   const std::string message = guarded([&] { scene_->reset(params); });
   if (!message.empty()) return fail("resetting " + sceneName_, message);
   params_ = scene_->params();
-  SceneEnergy e;
-  if (guarded([&] { e = scene_->energy(); }).empty()) {
-    kinetic_.push(e.kinetic), potential_.push(e.potential), total_.push(e.total());
-  }
   // The new scene's view, for the mouse, before its first frame is drawn.
   guarded([&] { snapshot_ = scene_->snapshot(); });
   resetTwin();
+  recordEnergy();
+}
+
+// This frame's energies into the plot's histories: the scene's, and the twin's total.
+void Viewer::recordEnergy() {
+  SceneEnergy e;
+  if (scene_ && guarded([&] { e = scene_->energy(); }).empty()) {
+    kinetic_.push(e.kinetic), potential_.push(e.potential), total_.push(e.total());
+  }
+  if (twin_ && guarded([&] { e = twin_->energy(); }).empty()) twinTotal_.push(e.total());
 }
 
 SceneParams Viewer::twinParams() const {
@@ -207,8 +213,6 @@ void Viewer::resetTwin() {
     return fail("building " + sceneName_ + " with the other integrator", message);
   }
   twin_ = std::move(twin);
-  SceneEnergy e;
-  if (guarded([&] { e = twin_->energy(); }).empty()) twinTotal_.push(e.total());
   guarded([&] { twinSnapshot_ = twin_->snapshot(); });
 }
 
@@ -243,17 +247,12 @@ bool Viewer::advance() {
            twinMessage);
       return false;
     }
-    SceneEnergy e;
-    if (guarded([&] { e = twin_->energy(); }).empty()) twinTotal_.push(e.total());
   }
   if (draws_ > 2) {  // the first draws compile llvmpipe's shaders: their spike would set the scale
     simulateMs_.push(millisecondsSince(start));
     drawMs_.push(lastDrawMs_);
   }
-  SceneEnergy e;
-  if (guarded([&] { e = scene_->energy(); }).empty()) {
-    kinetic_.push(e.kinetic), potential_.push(e.potential), total_.push(e.total());
-  }
+  recordEnergy();
   return true;
 }
 

@@ -61,6 +61,7 @@ class Viewer {
 
   // Side by side: the twin is the scene again with the other integrator.
   void resetTwin();
+  void recordEnergy();
   SceneParams twinParams() const;
   int views() const { return twin_ ? 2 : 1; }
   Scene& viewScene(int k) const;  ///< 0: left (symplectic when side by side), 1: right
