@@ -275,7 +275,8 @@ TEST_F(HostileProbe, AnInfiniteLoopTimesOutWithinTheLimitAndTheNextRequestWorks)
             "your code took longer than 1 s on this request (the time limit), so it was "
             "stopped");
   EXPECT_GE(took, 1.0);
-  EXPECT_LT(took, 1.5) << "reported late";
+  EXPECT_LT(took, 3.0)
+      << "reported late (a loaded machine may take a second or two to kill and reap)";
   expectHealthy();
 }
 

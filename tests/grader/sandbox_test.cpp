@@ -96,7 +96,8 @@ TEST(Sandbox, PastItsWallClockItIsKilledAndReportedAsTimedOut) {
   const double took = since(t0);
   EXPECT_EQ(e.kind, Exit::Kind::TimedOut) << e.describe();
   EXPECT_GE(took, 0.95);
-  EXPECT_LT(took, 2.5) << "killed late";
+  EXPECT_LT(took, 4.0)
+      << "killed late (a loaded machine may take a second or two to kill and reap)";
   EXPECT_EQ(e.describe(), "timed out after 1 s and was killed");
 }
 
