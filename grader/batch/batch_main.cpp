@@ -34,6 +34,10 @@
 // submission or its results. The student folders are all created before the first grading, so
 // that each a6_grade finds them to hide.
 //
+// Compiled objects: every a6_grade of the run shares OUT/.object-cache (a6_grade --object-cache,
+// grader/build/object_cache.h), so a file whose text was compiled before, in this run or an
+// earlier one, is not compiled again.
+//
 // Other students' processes: as root, every a6_grade claims a sandbox user of its own for its
 // whole grading (grader/sandbox/process.h), so gradings that run at once never share a process
 // limit, and a process one submission left behind cannot touch the next one's.
@@ -379,6 +383,9 @@ class Batch {
       args.insert(args.end(), {"--time-budget", budget.str()});
     }
     args.insert(args.end(), {"--hide", fs::absolute(o_.input).string(), "--hide", out_.string()});
+    // One object cache for the run (and the next: a regrade compiles only what changed). In the
+    // hidden output folder; no student folder's name starts with '.' (safeName).
+    args.insert(args.end(), {"--object-cache", (out_ / ".object-cache").string()});
     return args;
   }
 

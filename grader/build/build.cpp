@@ -31,12 +31,14 @@
 #include <functional>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <system_error>
 #include <thread>
 
+#include "build/object_cache.h"
 #include "sandbox/process.h"
 
 namespace a6::grader {
@@ -87,6 +89,15 @@ std::vector<std::string> undefinedSymbols(const std::string& linkerOutput) {
 }
 
 std::string stem(const std::string& file) { return fs::path(file).stem().string(); }
+
+// A task file's text (the intake's copy, the grader's), or nothing when it cannot be read.
+std::optional<std::string> readAll(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in.is_open()) return std::nullopt;
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return std::nullopt;
+  return text;
+}
 
 // What the compiler (`link` false) or the linker sees (an allow-list): the system's programs,
 // headers and libraries, the kit, the work folder and the student's files, and for the linker
@@ -448,7 +459,7 @@ std::string makeWorkDir(const fs::path& workDir) {
 class ProbeBuilder {
  public:
   ProbeBuilder(const Kit& kit, const Intake& intake, const fs::path& workDir,
-               const Limits& compileLimits, double budgetSeconds)
+               const Limits& compileLimits, double budgetSeconds, const ObjectCache* cache)
       : kit_(kit),
         intake_(intake),
         workDir_(workDir),
@@ -456,8 +467,8 @@ class ProbeBuilder {
         budgetSeconds_(budgetSeconds),
         end_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                 std::chrono::duration<double>(budgetSeconds))),
-        compileView_(viewOfTools(kit, workDir, sourceDirs(intake), false)),
         linkView_(viewOfTools(kit, workDir, sourceDirs(intake), true)),
+        cache_(cache != nullptr && cache->on() ? cache : nullptr),
         objects_(kTaskFiles.size()) {
     build_.tasks.resize(kTaskFiles.size());
   }
@@ -466,7 +477,7 @@ class ProbeBuilder {
     compileAll(jobs);
     linkProbe(kit_, build_, objects_, workDir_,
               [this](const fs::path& dir, std::vector<std::string> argv) {
-                return runInBudget(dir, std::move(argv));
+                return runInBudget(dir, linkView_, std::move(argv));
               });
     return std::move(build_);
   }
@@ -480,14 +491,14 @@ class ProbeBuilder {
     return dirs;
   }
 
-  // Runs the compiler or linker in `dir`, within what is left of the budget (a link gets at
-  // least 10 s); the sandbox's notes join the build's, once each.
-  Exit runInBudget(const fs::path& dir, std::vector<std::string> argv) {
+  // Runs the compiler or linker in `dir`, seeing `view`, within what is left of the budget (a
+  // link gets at least 10 s); the sandbox's notes join the build's, once each.
+  Exit runInBudget(const fs::path& dir, const SandboxView& view, std::vector<std::string> argv) {
     const bool link = dir.filename() == "link";
     Limits limits = compileLimits_;
     const double left = std::chrono::duration<double>(end_ - Clock::now()).count();
     limits.wallSeconds = std::max(link ? 10.0 : 1.0, std::min(limits.wallSeconds, left));
-    Exit e = runTool(kit_, link ? linkView_ : compileView_, dir, std::move(argv), limits);
+    Exit e = runTool(kit_, view, dir, std::move(argv), limits);
     std::lock_guard<std::mutex> lock(notesMutex_);
     for (const std::string& n : e.notes) {
       if (std::find(build_.notes.begin(), build_.notes.end(), n) == build_.notes.end()) {
@@ -536,13 +547,49 @@ class ProbeBuilder {
       return;
     }
     const fs::path source = absoluteClean(found->second);
+    const std::optional<std::string> text = cache_ ? readAll(source) : std::nullopt;
+    if (text && reuse(i, *text)) return;
     std::vector<std::string> argv = {kit_.compiler};
     argv.insert(argv.end(), kit_.compileFlags.begin(), kit_.compileFlags.end());
     argv.insert(argv.end(), {"-c", source.string(), "-o", stem(task.file) + ".o"});
+    // The compiler sees its own file and folder only: the object depends on nothing else the
+    // submission holds, which is what lets the object cache key it by the file's text.
+    const fs::path dir = workDir_ / "obj" / stem(task.file);
     const auto t0 = Clock::now();
-    const Exit e = runInBudget(workDir_ / "obj" / stem(task.file), argv);
+    const Exit e = runInBudget(dir, viewOfTools(kit_, dir, {source}, false), argv);
     task.seconds = secondsSince(t0);
     judge(i, source, e);
+    if (text && task.status == TaskBuild::Status::Compiled) {
+      cache_->keep(task.file, *text, task.object, task.messages);
+    }
+  }
+
+  // Task i from the object cache, when it holds `text` for its file: the object is copied into
+  // the work folder (where the sandboxed linker reads it) and checked as a fresh one is.
+  bool reuse(std::size_t i, const std::string& text) {
+    TaskBuild& task = build_.tasks[i];
+    const std::optional<CachedCompile> hit = cache_->find(task.file, text);
+    if (!hit) return false;
+    const auto t0 = Clock::now();
+    const fs::path dir = workDir_ / "obj" / stem(task.file);
+    const fs::path object = dir / (stem(task.file) + ".o");
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+    fs::create_directories(dir, ec);
+    if (!ec) fs::copy_file(hit->object, object, ec);
+    if (ec || !runsBeforeFilter(object).empty()) return false;
+    const auto readable = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                          fs::perms::others_read | fs::perms::others_exec;
+    fs::permissions(dir, readable, ec);
+    fs::permissions(
+        object,
+        readable & ~(fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec), ec);
+    task.status = TaskBuild::Status::Compiled;
+    task.messages = hit->messages;
+    task.object = objects_[i] = object;
+    task.reused = true;
+    task.seconds = secondsSince(t0);
+    return true;
   }
 
   // Task i's status and messages from what the compiler did.
@@ -589,14 +636,16 @@ class ProbeBuilder {
   const Limits compileLimits_;
   const double budgetSeconds_;
   const Clock::time_point end_;
-  const SandboxView compileView_, linkView_;
+  const SandboxView linkView_;
+  const ObjectCache* const cache_;  // null: compile every file
   Build build_;
   std::vector<fs::path> objects_;  // the object linked for each task
   std::mutex notesMutex_;
 };
 
 Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& workDirIn,
-                          const Limits& compileLimits, int jobs, double budgetSeconds) {
+                          const Limits& compileLimits, int jobs, double budgetSeconds,
+                          const ObjectCache* cache) {
   const auto start = Clock::now();
   Build build;
   const fs::path workDir = absoluteClean(workDirIn);
@@ -605,7 +654,7 @@ Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& 
   } else if (std::string e = makeWorkDir(workDir); !e.empty()) {
     build.error = e;
   } else {
-    build = ProbeBuilder(kit, intake, workDir, compileLimits, budgetSeconds).run(jobs);
+    build = ProbeBuilder(kit, intake, workDir, compileLimits, budgetSeconds, cache).run(jobs);
   }
   build.seconds = secondsSince(start);
   return build;
@@ -613,9 +662,10 @@ Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& 
 }  // namespace
 
 Build buildProbe(const Kit& kit, const Intake& intake, const fs::path& workDir,
-                 const Limits& compileLimits, int jobs, double budgetSeconds) {
+                 const Limits& compileLimits, int jobs, double budgetSeconds,
+                 const ObjectCache* cache) {
   try {
-    return buildProbeUnguarded(kit, intake, workDir, compileLimits, jobs, budgetSeconds);
+    return buildProbeUnguarded(kit, intake, workDir, compileLimits, jobs, budgetSeconds, cache);
   } catch (const std::exception& e) {
     Build build;
     build.error = std::string("building the probe failed: ") + e.what();

@@ -13,6 +13,8 @@
 
 namespace a6::grader {
 
+class ObjectCache;  // build/object_cache.h
+
 /// What was built once, read from BUILD/grader/kit.json (written by CMake,
 /// grader/build/build.cmake). What a compile reads besides the system headers sits in
 /// `dir`; the link also reads `probeMain` and `linkInputs`.
@@ -65,6 +67,8 @@ struct TaskBuild {
   std::string messages;          ///< the compiler's (and linker's) output (capped), for the report
   double seconds = 0;            ///< compile time, s
   std::filesystem::path object;  ///< Compiled: the object file (relinkProbe links it again)
+  bool reused = false;           ///< Compiled from the object cache: the same text compiled
+                                 ///< before against the same kit (build/object_cache.h)
   bool usesStarter() const { return status != Status::Compiled; }
 };
 
@@ -95,11 +99,13 @@ constexpr double kDefaultBuildBudget = 150;
 /// Compiles each file of `intake` in `workDir` (sandboxed, the grader's secrets hidden, only
 /// /dev/null, /dev/zero and /dev/urandom among the devices; `jobs` files at a time) and links
 /// the probe, workDir/a6_probe. workDir is created; objects go to workDir/obj/<task>/, the link
-/// happens in workDir/link/. An object holding code that runs before the probe's seccomp filter
-/// (an ifunc resolver, a .preinit_array entry) is replaced by the starter's.
+/// happens in workDir/link/. Each compile sees the kit, its own file and its own object folder
+/// only. An object holding code that runs before the probe's seccomp filter (an ifunc resolver,
+/// a .preinit_array entry) is replaced by the starter's. With a `cache` that is on, a file whose
+/// text it holds is not compiled (TaskBuild::reused), and each file that compiles is kept there.
 Build buildProbe(const Kit& kit, const Intake& intake, const std::filesystem::path& workDir,
                  const Limits& compileLimits = defaultCompileLimits(), int jobs = 2,
-                 double budgetSeconds = kDefaultBuildBudget);
+                 double budgetSeconds = kDefaultBuildBudget, const ObjectCache* cache = nullptr);
 
 /// Links a probe again, in workDir, from the objects `compiled` holds, with the starter's object
 /// for the files in `starterFor` (and for every file that did not compile): no compiling.

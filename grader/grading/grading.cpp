@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "build/build.h"
+#include "build/object_cache.h"
 #include "build/startup.h"
 #include "intake/intake.h"
 #include "mistakes/mistakes.h"
@@ -117,6 +118,7 @@ class Grading {
   std::optional<int> registerChecks();
   void build();
   void buildWith(Kit& kit);
+  ObjectCache openObjectCache(Kit& kit);
   void check();
   void endWhatWasLeftRunning();
   void nameMistakes();
@@ -282,9 +284,16 @@ void Grading::build() {
 }
 
 void Grading::buildWith(Kit& kit) {
+  const ObjectCache cache = openObjectCache(kit);
   secrets_ = kit.secrets;
   report_.build = buildProbe(kit, report_.intake, work_ / "build", defaultCompileLimits(),
-                             std::max(1, options_.jobs));
+                             std::max(1, options_.jobs), kDefaultBuildBudget, &cache);
+  if (cache.on() && !options_.quiet) {
+    const auto reused = std::count_if(report_.build.tasks.begin(), report_.build.tasks.end(),
+                                      [](const TaskBuild& t) { return t.reused; });
+    std::fprintf(stderr, "a6_grade: %ld of the task files' objects came from the object cache\n",
+                 static_cast<long>(reused));
+  }
   // Each task already fell back to the starter where it had to: a probe that still does not
   // link is the kit's fault, not the submission's.
   if (!report_.build.ok()) {
@@ -297,6 +306,22 @@ void Grading::buildWith(Kit& kit) {
   unavailable_ = ensureProbeStarts(kit, report_.build, work_, secrets_);
   // No program could start at all: every check fails at once, a TA should look.
   if (!unavailable_.empty()) ++report_.incidents.startFailures;
+}
+
+// --object-cache: hidden from the compiler and the probe (it holds other submissions' objects).
+// Off where the student's code runs as this user (not root): it could write in the cache.
+ObjectCache Grading::openObjectCache(Kit& kit) {
+  if (options_.objectCache.empty()) return {};
+  if (geteuid() != 0) {
+    report_.notes.push_back(
+        "the object cache was not used: not root, so the student's code runs as this user and "
+        "could write in it (every file was compiled)");
+    return {};
+  }
+  kit.secrets.push_back(fs::absolute(options_.objectCache));
+  ObjectCache cache(options_.objectCache, kitFingerprint(kit));
+  if (!cache.error().empty()) report_.notes.push_back(cache.error());
+  return cache;
 }
 
 // 3. Run the checks here, against the probe.

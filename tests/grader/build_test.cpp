@@ -3,8 +3,10 @@
 #include "build/build.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +15,7 @@
 #include <iostream>
 #include <string>
 
+#include "build/object_cache.h"
 #include "intake/intake.h"
 #include "sandbox_user.h"
 
@@ -91,10 +94,13 @@ class BuildProbe : public ::testing::Test {
     std::error_code ec;
     fs::remove_all(root_, ec);
   }
-  Build build(const Limits& limits = defaultCompileLimits()) {
-    const Intake in = takeSubmission(submission_, root_ / "work" / "src");
+  Build build(const Limits& limits = defaultCompileLimits()) { return buildIn("work", limits); }
+  // A build in root_/`work`, with `cache` when it is given.
+  Build buildIn(const std::string& work, const Limits& limits = defaultCompileLimits(),
+                const ObjectCache* cache = nullptr) {
+    const Intake in = takeSubmission(submission_, root_ / work / "src");
     EXPECT_TRUE(in.ok()) << in.error;
-    Build b = buildProbe(*kit_, in, root_ / "work" / "build", limits);
+    Build b = buildProbe(*kit_, in, root_ / work / "build", limits, 2, kDefaultBuildBudget, cache);
     if (std::getenv("A6_TEST_VERBOSE") != nullptr) std::cout << describe(b);
     return b;
   }
@@ -447,6 +453,142 @@ TEST_F(BuildProbe, RunawayCompilesFailWithinTheLimits) {
     EXPECT_TRUE(t.status == Status::TimedOut || t.status == Status::CompileError) << describe(b);
     expectStoppedAndLinked(b, "cloth.cpp", limits.wallSeconds);
   }
+}
+
+// ---- the object cache (build/object_cache.h)
+// -----------------------------------------------------
+
+class ObjectCache_ : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string tmpl = (fs::temp_directory_path() / "a6-cache-XXXXXX").string();
+    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
+    root_ = tmpl;
+    writeFile(root_ / "a.o", "the object of text A");
+    writeFile(root_ / "b.o", "the object of text B");
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(root_, ec);
+  }
+  // The cache's entry folders, by name.
+  std::vector<fs::path> entries(const ObjectCache& cache) {
+    std::vector<fs::path> found;
+    for (const auto& e : fs::directory_iterator(cache.dir())) found.push_back(e.path());
+    std::sort(found.begin(), found.end());
+    return found;
+  }
+  fs::path root_;
+};
+
+TEST_F(ObjectCache_, AnEntryServesOnlyItsExactTextFileAndKit) {
+  const ObjectCache cache(root_ / "cache", "kit A\n");
+  ASSERT_TRUE(cache.on()) << cache.error();
+  EXPECT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", "spring.cpp:1: warning: A"), "");
+  const std::optional<CachedCompile> hit = cache.find("spring.cpp", "text A");
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_EQ(readAll(hit->object), "the object of text A");
+  EXPECT_EQ(hit->messages, "spring.cpp:1: warning: A");
+  EXPECT_FALSE(cache.find("spring.cpp", "text A ").has_value()) << "another text";
+  EXPECT_FALSE(cache.find("forces.cpp", "text A").has_value()) << "another task file";
+  EXPECT_FALSE(ObjectCache(root_ / "cache", "kit B\n").find("spring.cpp", "text A").has_value())
+      << "another kit";
+  struct stat st;
+  ASSERT_EQ(::stat(cache.dir().c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 077, 0u) << "other submissions' objects are the grader's alone";
+}
+
+// An entry in the folder another text's entry would take (a hash collision, made on purpose or
+// not): its stored text is not the one asked for, so it serves neither text.
+TEST_F(ObjectCache_, AFolderNameIsAHintOnly) {
+  const ObjectCache cache(root_ / "cache", "kit\n");
+  ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
+  ASSERT_EQ(cache.keep("spring.cpp", "text B", root_ / "b.o", ""), "");
+  ASSERT_EQ(entries(cache).size(), 2u);
+  const fs::path a = cache.find("spring.cpp", "text A")->object.parent_path();
+  const fs::path b = cache.find("spring.cpp", "text B")->object.parent_path();
+  fs::remove_all(b);
+  fs::rename(a, b);  // A's entry where B's belongs
+  EXPECT_FALSE(cache.find("spring.cpp", "text B").has_value()) << "B was served A's object";
+  EXPECT_FALSE(cache.find("spring.cpp", "text A").has_value());
+  // A kept again is found again; B's folder stays A's, so B is compiled each time: slower, never
+  // wrong.
+  ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
+  EXPECT_EQ(readAll(cache.find("spring.cpp", "text A")->object), "the object of text A");
+  EXPECT_EQ(cache.keep("spring.cpp", "text B", root_ / "b.o", ""), "");
+  EXPECT_FALSE(cache.find("spring.cpp", "text B").has_value());
+}
+
+TEST_F(ObjectCache_, LinksAndOpenFoldersAreNeverUsed) {
+  const ObjectCache cache(root_ / "cache", "kit\n");
+  ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
+  const fs::path object = cache.find("spring.cpp", "text A")->object;
+  fs::remove(object);
+  fs::create_symlink(root_ / "b.o", object);
+  EXPECT_FALSE(cache.find("spring.cpp", "text A").has_value()) << "an object that is a link";
+  fs::create_symlink(root_ / "b.o", root_ / "link.o");
+  EXPECT_NE(cache.keep("forces.cpp", "text", root_ / "link.o", ""), "");
+  EXPECT_FALSE(cache.find("forces.cpp", "text").has_value()) << "kept through a link";
+  fs::create_directories(root_ / "open");
+  fs::permissions(root_ / "open",
+                  fs::perms::owner_all | fs::perms::others_read | fs::perms::others_exec);
+  const ObjectCache open(root_ / "open", "kit\n");
+  EXPECT_FALSE(open.on());
+  EXPECT_NE(open.error().find("0700"), std::string::npos) << open.error();
+  EXPECT_NE(open.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
+}
+
+TEST_F(BuildProbe, TheObjectCacheServesATextCompiledBeforeWithoutCompilingIt) {
+  const ObjectCache cache(root_ / "cache", kitFingerprint(*kit_));
+  ASSERT_TRUE(cache.on()) << cache.error();
+  // A warning, so that the compiler's messages are served too.
+  writeFile(submission_ / "cloth.cpp",
+            readAll(kRepo / "solution" / "cloth.cpp") +
+                "\nint a6UnusedWarning() { int unused = 1; return 0; }\n");
+  const Build first = buildIn("first", defaultCompileLimits(), &cache);
+  expectLinkedWithOthersCompiled(first, "");
+  const Build second = buildIn("second", defaultCompileLimits(), &cache);
+  expectLinkedWithOthersCompiled(second, "");
+  for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {
+    EXPECT_FALSE(first.tasks[i].reused) << first.tasks[i].file;
+    EXPECT_TRUE(second.tasks[i].reused) << second.tasks[i].file;
+    EXPECT_EQ(second.tasks[i].messages, first.tasks[i].messages) << second.tasks[i].file;
+    EXPECT_EQ(readAll(second.tasks[i].object), readAll(first.tasks[i].object));
+    EXPECT_EQ(second.tasks[i].object.string().rfind((root_ / "second").string(), 0), 0u)
+        << "the linker reads the object in the work folder: " << second.tasks[i].object;
+  }
+  EXPECT_NE(task(second, "cloth.cpp").messages.find("unused"), std::string::npos)
+      << describe(second);
+  // One file changed: it alone is compiled again.
+  writeFile(submission_ / "forces.cpp",
+            readAll(kRepo / "solution" / "forces.cpp") + "\n// changed\n");
+  const Build third = buildIn("third", defaultCompileLimits(), &cache);
+  expectLinkedWithOthersCompiled(third, "");
+  for (const TaskBuild& t : third.tasks) EXPECT_EQ(t.reused, t.file != "forces.cpp") << t.file;
+}
+
+// What makes an entry depend on its file's text alone: a compile sees no other task file. Nor
+// does it see the cache.
+TEST_F(BuildProbe, ACompileSeesNoOtherTaskFileNorTheObjectCache) {
+  if (::geteuid() != 0) GTEST_SKIP() << "hiding paths needs root (mount namespaces)";
+  const ObjectCache cache(root_ / "cache", kitFingerprint(*kit_));
+  writeFile(root_ / "a.o", "not an object");
+  ASSERT_EQ(cache.keep("joints.cpp", "int stolen = 42;\n", root_ / "a.o", ""), "");
+  const fs::path entry = cache.find("joints.cpp", "int stolen = 42;\n")->object.parent_path();
+  submitOnly("spring.cpp",
+             "#define A6_SIBLING_SEEN 1\n" + readAll(kRepo / "solution" / "spring.cpp"));
+  // A hidden file reads as empty: forces.cpp compiles, without spring.cpp's text.
+  writeFile(submission_ / "forces.cpp",
+            "#include \"spring.cpp\"\n#ifdef A6_SIBLING_SEEN\n#error the compile saw spring.cpp\n"
+            "#endif\n" +
+                readAll(kRepo / "solution" / "forces.cpp"));
+  writeFile(submission_ / "cloth.cpp", "#include \"" + (entry / "source").string() + "\"\n");
+  const Build b = buildIn("work", defaultCompileLimits(), &cache);
+  ASSERT_TRUE(b.ok()) << describe(b);
+  EXPECT_EQ(task(b, "spring.cpp").status, Status::Compiled) << describe(b);
+  EXPECT_EQ(task(b, "forces.cpp").status, Status::Compiled) << describe(b);
+  EXPECT_EQ(task(b, "cloth.cpp").status, Status::CompileError) << describe(b);
+  EXPECT_NE(task(b, "cloth.cpp").messages.find("No such file"), std::string::npos) << describe(b);
 }
 
 }  // namespace

@@ -77,7 +77,8 @@ Graded grade(const fs::path& submission, const fs::path& out, const fs::path& ru
   g.out = out;
   const std::string command = std::string(A6_GRADE_COMMAND) + " '" + submission.string() +
                               "' --out '" + out.string() + "' --rubric '" + rubric.string() +
-                              "' --quiet " + extra + " 2>&1";
+                              "' --object-cache '" A6_TEST_OBJECT_CACHE "' --quiet " + extra +
+                              " 2>&1";
   const auto start = std::chrono::steady_clock::now();
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return g;
