@@ -21,13 +21,13 @@
 #include <sys/prctl.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 #include "checks/checks.h"
 #include "grading/grading.h"
+#include "sandbox/sandbox.h"
 #include "scoring/rubric.h"
 
 namespace fs = std::filesystem;
@@ -139,18 +139,16 @@ int writePublicRubric(const Rubric& rubric, const std::string& file) {
   return 0;
 }
 
-bool within(const fs::path& inner, const fs::path& outer) {
-  return std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end()).first == outer.end();
-}
-
 // --object-cache inside --out or the submission would be in the sandbox's view (or graded);
 // around them, it would hide them.
 std::string objectCacheProblem(const GradeOptions& o) {
   if (o.objectCache.empty()) return "";
-  const fs::path cache = fs::weakly_canonical(fs::absolute(o.objectCache));
+  std::error_code ec;
+  const fs::path cache = fs::weakly_canonical(fs::absolute(o.objectCache), ec);
   for (const std::string& other : {o.out, o.submission}) {
-    const fs::path p = fs::weakly_canonical(fs::absolute(other));
-    if (within(cache, p) || within(p, cache)) {
+    const fs::path p = fs::weakly_canonical(fs::absolute(other), ec);
+    if (ec) return "cannot resolve " + other + ": " + ec.message();
+    if (isWithin(cache, p) || isWithin(p, cache)) {
       return "--object-cache " + o.objectCache + " and " + other +
              " overlap: give a folder of its own, outside --out and the submission";
     }

@@ -90,15 +90,6 @@ std::vector<std::string> undefinedSymbols(const std::string& linkerOutput) {
 
 std::string stem(const std::string& file) { return fs::path(file).stem().string(); }
 
-// A task file's text (the intake's copy, the grader's), or nothing when it cannot be read.
-std::optional<std::string> readAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in.is_open()) return std::nullopt;
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return std::nullopt;
-  return text;
-}
-
 // What the compiler (`link` false) or the linker sees (an allow-list): the system's programs,
 // headers and libraries, the kit, the work folder and the student's files, and for the linker
 // the probe's link inputs too (never the compiler: `.incbin` would copy the reference models'
@@ -499,13 +490,16 @@ class ProbeBuilder {
     const double left = std::chrono::duration<double>(end_ - Clock::now()).count();
     limits.wallSeconds = std::max(link ? 10.0 : 1.0, std::min(limits.wallSeconds, left));
     Exit e = runTool(kit_, view, dir, std::move(argv), limits);
-    std::lock_guard<std::mutex> lock(notesMutex_);
-    for (const std::string& n : e.notes) {
-      if (std::find(build_.notes.begin(), build_.notes.end(), n) == build_.notes.end()) {
-        build_.notes.push_back(n);
-      }
-    }
+    for (const std::string& n : e.notes) addNote(n);
     return e;
+  }
+
+  // A note for the TA (Build::notes), once.
+  void addNote(const std::string& note) {
+    std::lock_guard<std::mutex> lock(notesMutex_);
+    if (std::find(build_.notes.begin(), build_.notes.end(), note) == build_.notes.end()) {
+      build_.notes.push_back(note);
+    }
   }
 
   void compileAll(int jobs) {
@@ -547,21 +541,33 @@ class ProbeBuilder {
       return;
     }
     const fs::path source = absoluteClean(found->second);
-    const std::optional<std::string> text = cache_ ? readAll(source) : std::nullopt;
+    const std::optional<std::string> text = cache_ ? readRegularFile(source) : std::nullopt;
     if (text && reuse(i, *text)) return;
+    const Exit e = runCompiler(i, source);
+    // Kept only from a compile with every protection on: its object depends on the text alone.
+    if (text && task.status == TaskBuild::Status::Compiled && e.notes.empty()) {
+      if (const std::string why = cache_->keep(task.file, *text, task.object, task.messages);
+          !why.empty()) {
+        addNote("the object cache: " + why);
+      }
+    }
+  }
+
+  // Compiles task i's file, `source`, and judges the outcome. The compiler sees its own file
+  // and folder only, and __FILE__ is the file's name alone: the object depends on nothing else
+  // the submission holds or is named (what lets the object cache key it by the file's text).
+  Exit runCompiler(std::size_t i, const fs::path& source) {
+    TaskBuild& task = build_.tasks[i];
     std::vector<std::string> argv = {kit_.compiler};
     argv.insert(argv.end(), kit_.compileFlags.begin(), kit_.compileFlags.end());
-    argv.insert(argv.end(), {"-c", source.string(), "-o", stem(task.file) + ".o"});
-    // The compiler sees its own file and folder only: the object depends on nothing else the
-    // submission holds, which is what lets the object cache key it by the file's text.
+    argv.insert(argv.end(), {"-ffile-prefix-map=" + source.parent_path().string() + "/=", "-c",
+                             source.string(), "-o", stem(task.file) + ".o"});
     const fs::path dir = workDir_ / "obj" / stem(task.file);
     const auto t0 = Clock::now();
     const Exit e = runInBudget(dir, viewOfTools(kit_, dir, {source}, false), argv);
     task.seconds = secondsSince(t0);
     judge(i, source, e);
-    if (text && task.status == TaskBuild::Status::Compiled) {
-      cache_->keep(task.file, *text, task.object, task.messages);
-    }
+    return e;
   }
 
   // Task i from the object cache, when it holds `text` for its file: the object is copied into
@@ -576,8 +582,10 @@ class ProbeBuilder {
     std::error_code ec;
     fs::remove_all(dir, ec);
     fs::create_directories(dir, ec);
-    if (!ec) fs::copy_file(hit->object, object, ec);
-    if (ec || !runsBeforeFilter(object).empty()) return false;
+    std::ofstream(object, std::ios::binary | std::ios::trunc) << hit->object;
+    if (ec || readRegularFile(object) != hit->object || !runsBeforeFilter(object).empty()) {
+      return false;
+    }
     const auto readable = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                           fs::perms::others_read | fs::perms::others_exec;
     fs::permissions(dir, readable, ec);

@@ -5,16 +5,18 @@
 //
 // Why an entry can be trusted (docs/instructor.md, "The object cache"):
 //   - a task file is compiled alone: its compiler sees the kit, its own file and its own object
-//     folder, never another task file (grader/build/build.cpp), so the object depends on the
-//     file's text and the kit only;
-//   - an entry is used only when its stored text and kit fingerprint equal, byte for byte, what
-//     would be compiled now (the folder name is a 64-bit hash, a hint only: a collision, made on
-//     purpose or not, is a miss);
-//   - only the grader writes it, outside every sandbox, after the compile succeeded and the
-//     object passed the same checks a fresh one passes; the folder is the grader's alone (mode
-//     0700) and hidden from every compiler and probe.
+//     folder, never another task file (grader/build/build.cpp), and __FILE__ names the file
+//     alone, so the object depends on the file's text, the kit and the machine's compiler and
+//     headers only, which the fingerprint covers;
+//   - an entry is used only when its stored fingerprint and text equal, byte for byte, what
+//     would be compiled now, and its object the size and hash it was kept with (the folder name
+//     is a 64-bit hash, a hint only: a collision, made on purpose or not, is a miss);
+//   - only the grader writes it, outside every sandbox, after the compile succeeded with every
+//     protection on and the object passed the checks a fresh one passes; the folder is the
+//     grader's alone (mode 0700) and hidden from every compiler and probe.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -23,45 +25,54 @@
 
 namespace a6::grader {
 
-/// What one compile gave: the object (in the cache: copy it before use) and its messages.
+/// What one compile gave: the object's bytes and the compiler's messages.
 struct CachedCompile {
-  std::filesystem::path object;
+  std::string object;
   std::string messages;
 };
 
 /// A folder of compiled objects. Default-constructed it is off: it finds and keeps nothing.
 class ObjectCache {
  public:
+  /// Objects larger than this are not kept (a compile may write 64 MiB).
+  static constexpr std::size_t kMaxObjectBytes = std::size_t{4} << 20;
+
   ObjectCache() = default;
-  /// `dir` is created (mode 0700) when missing; `kitFingerprint` as kitFingerprint() gives it.
-  ObjectCache(std::filesystem::path dir, std::string kitFingerprint);
+  /// `dir` is created (mode 0700) when missing; `fingerprint` as kitFingerprint() gives it.
+  ObjectCache(std::filesystem::path dir, std::string fingerprint);
 
   bool on() const { return !dir_.empty(); }
   const std::filesystem::path& dir() const { return dir_; }
-  /// Why it is off though a folder was given (it could not be created), or "".
+  /// Why it is off though a folder was given, or "".
   const std::string& error() const { return error_; }
 
-  /// The entry compiled from exactly `source` as `file` against this kit, if there is one.
+  /// The whole, intact entry compiled from exactly `source` as `file`, if there is one.
   std::optional<CachedCompile> find(const std::string& file, const std::string& source) const;
-  /// Keeps a copy of `object` (a regular file) and `messages` for `file` with text `source`.
-  /// Returns "" or why it was not kept. Two graders keeping one entry at once: one copy wins.
+  /// Keeps `object` (a regular file's bytes, not over kMaxObjectBytes) and `messages` for `file`
+  /// with text `source`, in place of a broken entry or another text's. Returns "" or why not.
   std::string keep(const std::string& file, const std::string& source,
                    const std::filesystem::path& object, const std::string& messages) const;
 
  private:
   std::filesystem::path entryDir(const std::string& file, const std::string& source) const;
   std::string label(const std::string& file) const;
+  void removeLeftovers() const;
+  std::filesystem::path moveAside(const std::filesystem::path& entry) const;
 
   std::filesystem::path dir_;
   std::string fingerprint_;
   std::string error_;
 };
 
-/// What a compile reads besides the student's file, as one string: the compiler (path, size,
-/// time), the flags, the staged a6/ headers (their text), the precompiled header and every
-/// header under the flags' -isystem folders (Eigen's, Box2D's: size and time). Rebuilding the
-/// kit or upgrading those packages changes it; so the cache never hands out an object compiled
-/// against other headers.
+/// What decides a compile's output besides the student's file, as one string: this grader's
+/// program (size, time: its sandbox and messages), the compiler and assembler, the flags and the
+/// kit's secrets, the staged a6/ headers (their text), the precompiled header, and every folder
+/// under /usr/include, the compiler's own folders and the flags' -isystem folders (their times:
+/// a package upgrade renames files into them). A header edited in place is not seen: empty the
+/// cache after that.
 std::string kitFingerprint(const Kit& kit);
+
+/// The bytes of a regular file, read without following a link, or nothing.
+std::optional<std::string> readRegularFile(const std::filesystem::path& file);
 
 }  // namespace a6::grader

@@ -288,6 +288,10 @@ void Grading::buildWith(Kit& kit) {
   secrets_ = kit.secrets;
   report_.build = buildProbe(kit, report_.intake, work_ / "build", defaultCompileLimits(),
                              std::max(1, options_.jobs), kDefaultBuildBudget, &cache);
+  // For the TA, not the student's report: the cache's folder, whether another text was seen.
+  for (const std::string& note : report_.build.notes) {
+    std::fprintf(stderr, "a6_grade: build: %s\n", note.c_str());
+  }
   if (cache.on() && !options_.quiet) {
     const auto reused = std::count_if(report_.build.tasks.begin(), report_.build.tasks.end(),
                                       [](const TaskBuild& t) { return t.reused; });
@@ -309,18 +313,19 @@ void Grading::buildWith(Kit& kit) {
 }
 
 // --object-cache: hidden from the compiler and the probe (it holds other submissions' objects).
-// Off where the student's code runs as this user (not root): it could write in the cache.
+// Off where the student's code runs as this user (not root): it could write in the cache. What
+// goes wrong with it is the TA's business (stderr), never in the student's report.
 ObjectCache Grading::openObjectCache(Kit& kit) {
   if (options_.objectCache.empty()) return {};
   if (geteuid() != 0) {
-    report_.notes.push_back(
-        "the object cache was not used: not root, so the student's code runs as this user and "
-        "could write in it (every file was compiled)");
+    std::fprintf(stderr,
+                 "a6_grade: the object cache was not used: not root, so the student's code runs "
+                 "as this user and could write in it (every file was compiled)\n");
     return {};
   }
   kit.secrets.push_back(fs::absolute(options_.objectCache));
   ObjectCache cache(options_.objectCache, kitFingerprint(kit));
-  if (!cache.error().empty()) report_.notes.push_back(cache.error());
+  if (!cache.error().empty()) std::fprintf(stderr, "a6_grade: %s\n", cache.error().c_str());
   return cache;
 }
 

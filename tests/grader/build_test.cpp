@@ -458,7 +458,7 @@ TEST_F(BuildProbe, RunawayCompilesFailWithinTheLimits) {
 // ---- the object cache (build/object_cache.h)
 // -----------------------------------------------------
 
-class ObjectCache_ : public ::testing::Test {
+class ObjectCacheEntry : public ::testing::Test {
  protected:
   void SetUp() override {
     std::string tmpl = (fs::temp_directory_path() / "a6-cache-XXXXXX").string();
@@ -471,23 +471,29 @@ class ObjectCache_ : public ::testing::Test {
     std::error_code ec;
     fs::remove_all(root_, ec);
   }
-  // The cache's entry folders, by name.
-  std::vector<fs::path> entries(const ObjectCache& cache) {
+  // The cache's entry folders.
+  static std::vector<fs::path> entries(const ObjectCache& cache) {
     std::vector<fs::path> found;
     for (const auto& e : fs::directory_iterator(cache.dir())) found.push_back(e.path());
-    std::sort(found.begin(), found.end());
     return found;
+  }
+  // The one entry whose source is `text`.
+  static fs::path entryOf(const ObjectCache& cache, const std::string& text) {
+    for (const fs::path& e : entries(cache)) {
+      if (readAll(e / "source") == text) return e;
+    }
+    return {};
   }
   fs::path root_;
 };
 
-TEST_F(ObjectCache_, AnEntryServesOnlyItsExactTextFileAndKit) {
+TEST_F(ObjectCacheEntry, ServesOnlyItsExactTextFileAndKit) {
   const ObjectCache cache(root_ / "cache", "kit A\n");
   ASSERT_TRUE(cache.on()) << cache.error();
   EXPECT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", "spring.cpp:1: warning: A"), "");
   const std::optional<CachedCompile> hit = cache.find("spring.cpp", "text A");
   ASSERT_TRUE(hit.has_value());
-  EXPECT_EQ(readAll(hit->object), "the object of text A");
+  EXPECT_EQ(hit->object, "the object of text A");
   EXPECT_EQ(hit->messages, "spring.cpp:1: warning: A");
   EXPECT_FALSE(cache.find("spring.cpp", "text A ").has_value()) << "another text";
   EXPECT_FALSE(cache.find("forces.cpp", "text A").has_value()) << "another task file";
@@ -499,32 +505,44 @@ TEST_F(ObjectCache_, AnEntryServesOnlyItsExactTextFileAndKit) {
 }
 
 // An entry in the folder another text's entry would take (a hash collision, made on purpose or
-// not): its stored text is not the one asked for, so it serves neither text.
-TEST_F(ObjectCache_, AFolderNameIsAHintOnly) {
+// not): its stored text is not the one asked for, so it serves neither text; keeping the other
+// text replaces it.
+TEST_F(ObjectCacheEntry, AFolderNameIsAHintOnly) {
   const ObjectCache cache(root_ / "cache", "kit\n");
   ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
   ASSERT_EQ(cache.keep("spring.cpp", "text B", root_ / "b.o", ""), "");
-  ASSERT_EQ(entries(cache).size(), 2u);
-  const fs::path a = cache.find("spring.cpp", "text A")->object.parent_path();
-  const fs::path b = cache.find("spring.cpp", "text B")->object.parent_path();
+  const fs::path a = entryOf(cache, "text A"), b = entryOf(cache, "text B");
+  ASSERT_FALSE(a.empty() || b.empty());
   fs::remove_all(b);
   fs::rename(a, b);  // A's entry where B's belongs
   EXPECT_FALSE(cache.find("spring.cpp", "text B").has_value()) << "B was served A's object";
   EXPECT_FALSE(cache.find("spring.cpp", "text A").has_value());
-  // A kept again is found again; B's folder stays A's, so B is compiled each time: slower, never
-  // wrong.
-  ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
-  EXPECT_EQ(readAll(cache.find("spring.cpp", "text A")->object), "the object of text A");
-  EXPECT_EQ(cache.keep("spring.cpp", "text B", root_ / "b.o", ""), "");
-  EXPECT_FALSE(cache.find("spring.cpp", "text B").has_value());
+  ASSERT_EQ(cache.keep("spring.cpp", "text B", root_ / "b.o", ""), "");
+  EXPECT_EQ(cache.find("spring.cpp", "text B")->object, "the object of text B");
+  EXPECT_EQ(entries(cache).size(), 1u) << "the entry it replaced is gone";
 }
 
-TEST_F(ObjectCache_, LinksAndOpenFoldersAreNeverUsed) {
+// An object cut short (a power cut before it reached the disk) or changed since it was kept is
+// never served; keeping its text again replaces it.
+TEST_F(ObjectCacheEntry, ABrokenEntryIsAMissAndIsReplaced) {
   const ObjectCache cache(root_ / "cache", "kit\n");
   ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
-  const fs::path object = cache.find("spring.cpp", "text A")->object;
+  const fs::path entry = entryOf(cache, "text A");
+  ASSERT_FALSE(entry.empty());
+  fs::resize_file(entry / "object.o", 5);
+  EXPECT_FALSE(cache.find("spring.cpp", "text A").has_value()) << "a cut object";
+  ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
+  EXPECT_EQ(cache.find("spring.cpp", "text A")->object, "the object of text A");
+  writeFile(entryOf(cache, "text A") / "object.o", "the object of text X");  // same size
+  EXPECT_FALSE(cache.find("spring.cpp", "text A").has_value()) << "a changed object";
+}
+
+TEST_F(ObjectCacheEntry, LinksAndOpenFoldersAreNeverUsed) {
+  const ObjectCache cache(root_ / "cache", "kit\n");
+  ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
+  const fs::path object = entryOf(cache, "text A") / "object.o";
   fs::remove(object);
-  fs::create_symlink(root_ / "b.o", object);
+  fs::create_symlink(root_ / "a.o", object);
   EXPECT_FALSE(cache.find("spring.cpp", "text A").has_value()) << "an object that is a link";
   fs::create_symlink(root_ / "b.o", root_ / "link.o");
   EXPECT_NE(cache.keep("forces.cpp", "text", root_ / "link.o", ""), "");
@@ -538,13 +556,36 @@ TEST_F(ObjectCache_, LinksAndOpenFoldersAreNeverUsed) {
   EXPECT_NE(open.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
 }
 
+// What decides a compile's output is in the fingerprint: a staged header's text, a flag, a
+// header under an -isystem folder outside /usr/include.
+TEST_F(ObjectCacheEntry, TheKitFingerprintChangesWithWhatACompileReads) {
+  Kit kit;
+  kit.compiler = "/usr/bin/c++";
+  kit.dir = root_ / "kit";
+  writeFile(kit.dir / "include" / "a6" / "spring.h", "struct Spring {};\n");
+  writeFile(root_ / "eigen" / "Core", "// Eigen\n");
+  kit.compileFlags = {"-O2", "-isystem", (root_ / "eigen").string()};
+  const std::string base = kitFingerprint(kit);
+  EXPECT_EQ(kitFingerprint(kit), base) << "the same kit, the same fingerprint";
+  writeFile(kit.dir / "include" / "a6" / "spring.h", "struct Spring { int k; };\n");
+  const std::string header = kitFingerprint(kit);
+  EXPECT_NE(header, base) << "a staged header changed";
+  kit.compileFlags[0] = "-O1";
+  const std::string flag = kitFingerprint(kit);
+  EXPECT_NE(flag, header) << "a flag changed";
+  const auto later = fs::last_write_time(root_ / "eigen" / "Core") + std::chrono::seconds(5);
+  writeFile(root_ / "eigen" / "Core", "// Eigen, upgraded\n");
+  fs::last_write_time(root_ / "eigen" / "Core", later);
+  EXPECT_NE(kitFingerprint(kit), flag) << "a system header changed";
+}
+
 TEST_F(BuildProbe, TheObjectCacheServesATextCompiledBeforeWithoutCompilingIt) {
   const ObjectCache cache(root_ / "cache", kitFingerprint(*kit_));
   ASSERT_TRUE(cache.on()) << cache.error();
-  // A warning, so that the compiler's messages are served too.
-  writeFile(submission_ / "cloth.cpp",
-            readAll(kRepo / "solution" / "cloth.cpp") +
-                "\nint a6UnusedWarning() { int unused = 1; return 0; }\n");
+  // A warning, so that the compiler's messages are served too, and __FILE__.
+  writeFile(submission_ / "cloth.cpp", readAll(kRepo / "solution" / "cloth.cpp") +
+                                           "\nint a6UnusedWarning() { int unused = 1; return 0; }\n"
+                                           "const char* a6WhereAmI() { return __FILE__; }\n");
   const Build first = buildIn("first", defaultCompileLimits(), &cache);
   expectLinkedWithOthersCompiled(first, "");
   const Build second = buildIn("second", defaultCompileLimits(), &cache);
@@ -559,12 +600,32 @@ TEST_F(BuildProbe, TheObjectCacheServesATextCompiledBeforeWithoutCompilingIt) {
   }
   EXPECT_NE(task(second, "cloth.cpp").messages.find("unused"), std::string::npos)
       << describe(second);
+  // The object names no folder of the first grading: __FILE__ is the file's name alone.
+  EXPECT_EQ(readAll(task(first, "cloth.cpp").object).find((root_ / "first").string()),
+            std::string::npos);
   // One file changed: it alone is compiled again.
   writeFile(submission_ / "forces.cpp",
             readAll(kRepo / "solution" / "forces.cpp") + "\n// changed\n");
   const Build third = buildIn("third", defaultCompileLimits(), &cache);
   expectLinkedWithOthersCompiled(third, "");
   for (const TaskBuild& t : third.tasks) EXPECT_EQ(t.reused, t.file != "forces.cpp") << t.file;
+}
+
+// A cached object is checked as a fresh one is: one holding code that would run before the
+// probe's filter (here an entry kept for the solution's text, forged with the hostile object)
+// is not used; the file is compiled.
+TEST_F(BuildProbe, ACachedObjectThatWouldRunBeforeTheFilterIsCompiledAgain) {
+  const ObjectCache cache(root_ / "cache", kitFingerprint(*kit_));
+  submitOnly("spring.cpp", readAll(kRepo / "tests/grader/submissions/preinit_entry/spring.cpp"));
+  const Build hostile = buildIn("hostile", defaultCompileLimits(), &cache);
+  ASSERT_EQ(task(hostile, "spring.cpp").status, Status::LinkError) << describe(hostile);
+  const fs::path object = root_ / "hostile" / "build" / "obj" / "spring" / "spring.o";
+  const std::string solution = readAll(kRepo / "solution" / "spring.cpp");
+  ASSERT_EQ(cache.keep("spring.cpp", solution, object, ""), "");
+  submitOnly("spring.cpp", solution);
+  const Build b = buildIn("work", defaultCompileLimits(), &cache);
+  EXPECT_EQ(task(b, "spring.cpp").status, Status::Compiled) << describe(b);
+  EXPECT_FALSE(task(b, "spring.cpp").reused);
 }
 
 // What makes an entry depend on its file's text alone: a compile sees no other task file. Nor
@@ -574,7 +635,8 @@ TEST_F(BuildProbe, ACompileSeesNoOtherTaskFileNorTheObjectCache) {
   const ObjectCache cache(root_ / "cache", kitFingerprint(*kit_));
   writeFile(root_ / "a.o", "not an object");
   ASSERT_EQ(cache.keep("joints.cpp", "int stolen = 42;\n", root_ / "a.o", ""), "");
-  const fs::path entry = cache.find("joints.cpp", "int stolen = 42;\n")->object.parent_path();
+  fs::path entry;
+  for (const auto& e : fs::directory_iterator(cache.dir())) entry = e.path();
   submitOnly("spring.cpp",
              "#define A6_SIBLING_SEEN 1\n" + readAll(kRepo / "solution" / "spring.cpp"));
   // A hidden file reads as empty: forces.cpp compiles, without spring.cpp's text.
