@@ -7,7 +7,9 @@
 //   - a task file is compiled alone: its compiler sees the kit, its own file and its own object
 //     folder, never another task file (grader/build/build.cpp), and __FILE__ names the file
 //     alone, so the object depends on the file's text, the kit and the machine's compiler and
-//     headers only, which the fingerprint covers;
+//     headers, which the fingerprint covers, and on nothing else unless the file asks for the
+//     moment or place of its compile (__TIME__, __has_include of a covered file): then a reused
+//     object holds what its first compile saw, which affects that file's own grading only;
 //   - an entry is used only when its stored fingerprint and text equal, byte for byte, what
 //     would be compiled now, and its object the size and hash it was kept with (the folder name
 //     is a 64-bit hash, a hint only: a collision, made on purpose or not, is a miss);
