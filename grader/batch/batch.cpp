@@ -25,6 +25,8 @@
 #include <sstream>
 #include <system_error>
 
+#include "common/fnv1a.h"
+
 namespace a6::grader::batch {
 
 namespace {
@@ -166,20 +168,9 @@ std::pair<std::string, int> withoutReupload(const std::string& name) {
   return {name, 0};
 }
 
-std::string hex16(std::uint64_t h) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
-
-// FNV-1a, 64 bits: enough to notice a changed file (this is not a defence against forgery: the
-// input folder is the TA's).
-struct Hash {
-  std::uint64_t h = 1469598103934665603ull;
-  void add(const std::string& bytes) {
-    for (const unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
-    h = (h ^ 0xffu) * 1099511628211ull;  // a separator, so "ab"+"c" differs from "a"+"bc"
-  }
+// FNV-1a: enough to notice a changed file (this is not a defence against forgery: the input
+// folder is the TA's).
+struct Hash : Fnv1a {
   void addFile(const fs::path& file) {
     std::error_code ec;
     const std::uintmax_t size = fs::file_size(file, ec);
@@ -196,9 +187,7 @@ struct Hash {
     std::ifstream in(file, std::ios::binary);
     char buffer[1 << 16];
     while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-      for (std::streamsize i = 0; i < in.gcount(); ++i) {
-        h = (h ^ static_cast<unsigned char>(buffer[i])) * 1099511628211ull;
-      }
+      addBytes(buffer, static_cast<std::size_t>(in.gcount()));
     }
   }
 };
@@ -658,13 +647,13 @@ std::string fingerprint(const Submission& submission, const std::string& options
       h.add(name);
       h.addFile(from);
     }
-    return hex16(h.h);
+    return h.hex();
   }
   const fs::file_status st = fs::symlink_status(submission.path, ec);
   if (!fs::is_directory(st)) {
     h.add("file");
     h.addFile(submission.path);
-    return hex16(h.h);
+    return h.hex();
   }
   std::vector<fs::path> entries;
   for (fs::recursive_directory_iterator it(submission.path, ec), end; !ec && it != end;
@@ -684,7 +673,7 @@ std::string fingerprint(const Submission& submission, const std::string& options
       h.add(fs::is_directory(s) ? "dir" : "other");
     }
   }
-  return hex16(h.h);
+  return h.hex();
 }
 
 // ---- outcomes ---------------------------------------------------------------------------------

@@ -432,16 +432,22 @@ std::string kitUnreadableInSandbox(const Kit& kit, const fs::path& workDir) {
 
 namespace {
 
+// A folder the grader makes that the sandbox's user must reach (rwxr-xr-x), and a file in it
+// that user must read (rw-r--r--).
+constexpr fs::perms kOpenFolder = fs::perms::owner_all | fs::perms::group_read |
+                                  fs::perms::group_exec | fs::perms::others_read |
+                                  fs::perms::others_exec;
+constexpr fs::perms kReadableFile =
+    fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read;
+
 // Makes workDir/obj, open to the sandbox's user (the compiler runs as nobody and must reach
 // it). Returns an error, or "".
 std::string makeWorkDir(const fs::path& workDir) {
   std::error_code ec;
   fs::create_directories(workDir / "obj", ec);
   if (ec) return "cannot create the work folder " + workDir.string() + ": " + ec.message();
-  const auto open = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                    fs::perms::others_read | fs::perms::others_exec;
-  fs::permissions(workDir, open, ec);
-  fs::permissions(workDir / "obj", open, ec);
+  fs::permissions(workDir, kOpenFolder, ec);
+  fs::permissions(workDir / "obj", kOpenFolder, ec);
   return "";
 }
 
@@ -582,16 +588,12 @@ class ProbeBuilder {
     std::error_code ec;
     fs::remove_all(dir, ec);
     fs::create_directories(dir, ec);
-    std::ofstream(object, std::ios::binary | std::ios::trunc) << hit->object;
-    if (ec || readRegularFile(object) != hit->object || !runsBeforeFilter(object).empty()) {
-      return false;
-    }
-    const auto readable = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                          fs::perms::others_read | fs::perms::others_exec;
-    fs::permissions(dir, readable, ec);
-    fs::permissions(
-        object,
-        readable & ~(fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec), ec);
+    std::ofstream out(object, std::ios::binary | std::ios::trunc);
+    out << hit->object;
+    out.close();
+    if (ec || !out || !runsBeforeFilter(object).empty()) return false;
+    fs::permissions(dir, kOpenFolder, ec);
+    fs::permissions(object, kReadableFile, ec);
     task.status = TaskBuild::Status::Compiled;
     task.messages = hit->messages;
     task.object = objects_[i] = object;
@@ -689,10 +691,7 @@ Build relinkProbe(const Kit& kit, const Build& compiled, const std::set<std::str
     std::error_code ec;
     const fs::path workDir = absoluteClean(workDirIn);
     fs::create_directories(workDir / "link", ec);
-    fs::permissions(workDir,
-                    fs::perms::owner_all | fs::perms::others_read | fs::perms::others_exec |
-                        fs::perms::group_read | fs::perms::group_exec,
-                    ec);
+    fs::permissions(workDir, kOpenFolder, ec);
     build.tasks = compiled.tasks;
     std::vector<fs::path> objects;
     std::vector<fs::path> keep;

@@ -23,28 +23,17 @@
 #include <system_error>
 #include <vector>
 
+#include "common/fnv1a.h"
+
 namespace a6::grader {
 namespace {
 
 namespace fs = std::filesystem;
 
-// FNV-1a, 64 bits: names an entry's folder and sums its object. Neither is a defence against
-// forgery: find() compares the text itself, and only the grader writes an object.
-struct Fnv {
-  std::uint64_t h = 1469598103934665603ull;
-  void add(const std::string& bytes) {
-    for (const unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
-    h = (h ^ 0xffu) * 1099511628211ull;  // a separator: "ab"+"c" differs from "a"+"bc"
-  }
-  std::string hex() const {
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-    return buf;
-  }
-};
-
+// FNV-1a names an entry's folder and sums its object. Neither is a defence against forgery:
+// find() compares the text itself, and only the grader writes an object.
 std::string sum(const std::string& bytes) {
-  Fnv h;
+  Fnv1a h;
   h.add(bytes);
   return std::to_string(bytes.size()) + " " + h.hex();
 }
@@ -72,7 +61,7 @@ std::string stamp(const fs::path& path) {
 }
 
 // The stamps of `dir` and every folder under it (with `files`, of every file too).
-void addTree(Fnv& h, const fs::path& dir, bool files) {
+void addTree(Fnv1a& h, const fs::path& dir, bool files) {
   h.add(dir.string() + " " + stamp(dir));
   std::vector<std::string> seen;
   std::error_code ec;
@@ -96,7 +85,7 @@ std::string headersOf(const Kit& kit) {
     if (it->is_regular_file(tec)) files.push_back(it->path());
   }
   std::sort(files.begin(), files.end());
-  Fnv h;
+  Fnv1a h;
   for (const fs::path& f : files) {
     h.add(f.string());
     h.add(readRegularFile(f).value_or("(unreadable)"));
@@ -106,7 +95,7 @@ std::string headersOf(const Kit& kit) {
 
 // The system's part: compiler, assembler, their folders and the headers' folders.
 std::string systemOf(const Kit& kit) {
-  Fnv h;
+  Fnv1a h;
   for (const fs::path& program :
        {fs::path("/proc/self/exe"), fs::path(kit.compiler), fs::path("/usr/bin/as")}) {
     std::error_code ec;
@@ -195,7 +184,7 @@ std::string ObjectCache::label(const std::string& file) const {
 }
 
 fs::path ObjectCache::entryDir(const std::string& file, const std::string& source) const {
-  Fnv h;
+  Fnv1a h;
   h.add(label(file));
   h.add(source);
   return dir_ / h.hex();

@@ -15,6 +15,7 @@
 #include "build/build.h"
 #include "build/object_cache.h"
 #include "build/startup.h"
+#include "common/fnv1a.h"
 #include "intake/intake.h"
 #include "mistakes/mistakes.h"
 #include "replay/replays.h"
@@ -62,18 +63,16 @@ fs::path enterableScratch() {
 // The default seed: a hash of the six files taken, so the same submission always gets the same
 // inputs and a different one cannot know its own in advance.
 std::uint64_t seedOf(const std::map<std::string, fs::path>& files) {
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
-  auto mix = [&h](const std::string& bytes) {
-    for (const unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
-  };
+  Fnv1a h;  // the names and texts run together, without separators
   for (const auto& [name, path] : files) {
-    mix(name);
+    h.addBytes(name.data(), name.size());
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
-    mix(text.str());
+    const std::string bytes = text.str();
+    h.addBytes(bytes.data(), bytes.size());
   }
-  return h % 1000000007ull;  // short enough to type in a regrade
+  return h.h % 1000000007ull;  // short enough to type in a regrade
 }
 
 const char* const kCouldNotBuild =
