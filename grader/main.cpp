@@ -71,11 +71,6 @@ void addInputOptions(CLI::App& app, Options& all) {
                  "run's own work folder (a6_batch hides the other submissions and results); "
                  "repeatable")
       ->allow_extra_args(false);  // one path per --hide: never the submission after it
-  app.add_option("--object-cache", options.objectCache,
-                 "as root, reuse the objects of files compiled before with the same text against "
-                 "the same kit, and keep each file that compiles there (a6_batch keeps one for "
-                 "its run); a folder outside --out and the submission, made the grader's alone "
-                 "and hidden from the compiler and the probe");
 }
 
 // How the grading runs.
@@ -139,23 +134,6 @@ int writePublicRubric(const Rubric& rubric, const std::string& file) {
   return 0;
 }
 
-// --object-cache inside --out or the submission would be in the sandbox's view (or graded);
-// around them, it would hide them.
-std::string objectCacheProblem(const GradeOptions& o) {
-  if (o.objectCache.empty()) return "";
-  std::error_code ec;
-  const fs::path cache = fs::weakly_canonical(fs::absolute(o.objectCache), ec);
-  for (const std::string& other : {o.out, o.submission}) {
-    const fs::path p = fs::weakly_canonical(fs::absolute(other), ec);
-    if (ec) return "cannot resolve " + other + ": " + ec.message();
-    if (isWithin(cache, p) || isWithin(p, cache)) {
-      return "--object-cache " + o.objectCache + " and " + other +
-             " overlap: give a folder of its own, outside --out and the submission";
-    }
-  }
-  return "";
-}
-
 // What the command line asks for, once it is read.
 int dispatch(const Options& options) {
   const Rubric rubric = readRubric(options.rubric);
@@ -166,10 +144,6 @@ int dispatch(const Options& options) {
   }
   if (options.grading.submission.empty() || options.grading.out.empty()) {
     std::fprintf(stderr, "a6_grade: give a SUBMISSION and --out DIR (a6_grade --help)\n");
-    return 2;
-  }
-  if (const std::string e = objectCacheProblem(options.grading); !e.empty()) {
-    std::fprintf(stderr, "a6_grade: %s\n", e.c_str());
     return 2;
   }
   return grade(options.grading, rubric);

@@ -31,7 +31,7 @@ for c in "${cases[@]}"; do
   if [ -f "$work/r/results.json" ]; then
     jq --arg status "$status" 'del(.execution_time, .extra_data.seconds, .extra_data.grader_peak_rss_mib)
       | .a6_grade_exit_status = $status' "$work/r/results.json" |
-      sed -E "s|$work|WORK|g; s|/tmp/[A-Za-z0-9_.-]+|TMP|g; s|took longer than [0-9.]+ s|took longer than N s|g" \
+      sed -E "s|$work|WORK|g; s|/tmp/[A-Za-z0-9_.-]+|TMP|g; s|ran out of time: [0-9.]+ s|ran out of time: N s|g" \
         >"$out/$name.json"
   else
     echo "{\"a6_grade_exit_status\": \"$status\", \"results\": \"none\"}" >"$out/$name.json"

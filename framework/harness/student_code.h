@@ -40,6 +40,8 @@ enum class Fault : unsigned char {
   NotRun,        ///< not sent: the check's time limit or all checks' time budget was spent
   Unavailable,   ///< not sent: there is no probe (the build failed; `error` says why)
   GraderError,   ///< the grader itself failed on this request
+  Killed,        ///< the probe was killed by SIGKILL the grader did not send (the machine's
+                 ///< doing: out of memory, another program): the check is run again
 };
 
 /// Every result carries an outcome: no fault and an empty error when the student code ran to

@@ -34,9 +34,8 @@
 // submission or its results. The student folders are all created before the first grading, so
 // that each a6_grade finds them to hide.
 //
-// Compiled objects: every a6_grade of the run shares OUT/.object-cache (a6_grade --object-cache,
-// grader/build/object_cache.h), so a file whose text was compiled before, in this run or an
-// earlier one, is not compiled again.
+// Compiled objects: none is shared between submissions (a file's object can depend on where
+// it was compiled); only the kit's own known objects (Kit::knownObjects) are used by all.
 //
 // Other students' processes: as root, every a6_grade claims a sandbox user of its own for its
 // whole grading (grader/sandbox/process.h), so gradings that run at once never share a process
@@ -64,6 +63,7 @@
 #include <iomanip>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -265,7 +265,8 @@ class Batch {
 
   int run() {
     const auto start = Clock::now();
-    const std::vector<std::size_t> queue = toGrade();
+    std::vector<std::size_t>& queue = queue_;
+    queue = toGrade();
     writeGradebook();
     const int skipped = static_cast<int>(std::count(skipped_.begin(), skipped_.end(), true));
     Progress progress(static_cast<int>(inv_.submissions.size()), skipped,
@@ -336,8 +337,19 @@ class Batch {
       const Running done = running_[k];
       running_.erase(running_.begin() + static_cast<std::ptrdiff_t>(k));
       finish(done, status, vanished);
-      finished(done.index, progress);
+      if (!gradedAgain(done.index)) finished(done.index, progress);
     }
+  }
+
+  // A grading that ended in a grader error (the machine failed it: a probe that could not
+  // start, the grader killed) is queued once more before the run ends; true when it was.
+  bool gradedAgain(std::size_t i) {
+    if (outcomes_[i]->status != kGraderError || regraded_.count(i) > 0) return false;
+    regraded_.insert(i);
+    notes_.push_back(inv_.submissions[i].key + ": graded again after a grader error (" +
+                     outcomes_[i]->reason + ")");
+    queue_.push_back(i);
+    return true;
   }
 
   // The time limit: the whole process group, at once.
@@ -383,9 +395,6 @@ class Batch {
       args.insert(args.end(), {"--time-budget", budget.str()});
     }
     args.insert(args.end(), {"--hide", fs::absolute(o_.input).string(), "--hide", out_.string()});
-    // One object cache for the run (and the next: a regrade compiles only what changed). In the
-    // hidden output folder; no student folder's name starts with '.' (safeName).
-    args.insert(args.end(), {"--object-cache", (out_ / ".object-cache").string()});
     return args;
   }
 
@@ -673,6 +682,8 @@ class Batch {
   std::vector<double> ranSeconds_;  // wall-clock seconds of each grading of this run
   std::vector<bool> skipped_;       // graded by an earlier run, unchanged
   std::vector<std::string> notes_;
+  std::vector<std::size_t> queue_;  // what is to be graded, in order (a grader error: again)
+  std::set<std::size_t> regraded_;  // queued again after a grader error (once each)
 };
 
 // Reads the command line into `options`; an exit status when the program ends here (--help, or

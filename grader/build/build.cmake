@@ -29,8 +29,7 @@ set(A6_KIT_DIR ${CMAKE_CURRENT_BINARY_DIR}/kit)
 set(A6_KIT_JSON ${CMAKE_CURRENT_BINARY_DIR}/kit.json)
 
 # The build runs the compiler and the linker in the sandbox (a6_sandbox).
-add_library(a6_build STATIC ${CMAKE_CURRENT_SOURCE_DIR}/build/build.cpp
-                             ${CMAKE_CURRENT_SOURCE_DIR}/build/object_cache.cpp)
+add_library(a6_build STATIC ${CMAKE_CURRENT_SOURCE_DIR}/build/build.cpp)
 target_include_directories(a6_build PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_build PUBLIC a6_sandbox PRIVATE nlohmann_json::nlohmann_json)
 target_compile_definitions(a6_build PRIVATE A6_DEFAULT_KIT_JSON="${A6_KIT_JSON}")
@@ -69,6 +68,29 @@ foreach(file IN LISTS A6_TASK_FILES)
     VERBATIM)
   list(APPEND kit_files ${object} ${A6_KIT_DIR}/starter/${file}.syms)
 endforeach()
+
+# Known texts: the solution's files and their objects, beside the kit (never in it: the kit
+# folder is in every compile's view, this one is hidden with the build tree). A submitted file
+# equal to one byte for byte is linked with its object instead of being compiled (Kit::
+# knownObjects): the grader's own texts are all that is shared between gradings.
+set(A6_KNOWN_DIR "")
+if(A6_HAVE_SOLUTION)
+  set(A6_KNOWN_DIR ${CMAKE_CURRENT_BINARY_DIR}/known)
+  foreach(file IN LISTS A6_TASK_FILES)
+    add_custom_command(
+      OUTPUT ${A6_KNOWN_DIR}/${file}.o ${A6_KNOWN_DIR}/${file}.cpp
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${A6_KNOWN_DIR}
+      COMMAND ${CMAKE_COMMAND} -E copy $<TARGET_OBJECTS:a6_solution_${file}>
+              ${A6_KNOWN_DIR}/${file}.o
+      COMMAND ${CMAKE_COMMAND} -E copy ${PROJECT_SOURCE_DIR}/solution/${file}.cpp
+              ${A6_KNOWN_DIR}/${file}.cpp
+      DEPENDS a6_solution_${file} $<TARGET_OBJECTS:a6_solution_${file}>
+              ${PROJECT_SOURCE_DIR}/solution/${file}.cpp
+      COMMENT "Copying the solution's ${file}.o to the grader's known objects"
+      VERBATIM)
+    list(APPEND kit_files ${A6_KNOWN_DIR}/${file}.o ${A6_KNOWN_DIR}/${file}.cpp)
+  endforeach()
+endif()
 
 # The flags every task file is compiled with: those of the project's own build (C++17, -O2,
 # no FMA contraction, NDEBUG as in the default RelWithDebInfo build), warnings on so that
@@ -143,6 +165,7 @@ file(GENERATE OUTPUT ${A6_KIT_JSON} CONTENT "{
   \"modelsMain\": ${json_models_main},
   \"linkInputs\": ${json_link},
   \"starterObjects\": \"${A6_KIT_DIR}/starter\",
+  \"knownObjects\": \"${A6_KNOWN_DIR}\",
   \"dir\": \"${A6_KIT_DIR}\",
   \"secrets\": ${json_secrets}
 }

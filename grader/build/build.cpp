@@ -19,6 +19,8 @@
 #include "build/build.h"
 
 #include <elf.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -38,7 +40,6 @@
 #include <system_error>
 #include <thread>
 
-#include "build/object_cache.h"
 #include "sandbox/process.h"
 
 namespace a6::grader {
@@ -161,6 +162,32 @@ std::string runsBeforeFilter(const fs::path& object) {
   }
   return "";
 }
+// The bytes of a regular file, read without following a link, or nothing.
+std::optional<std::string> readRegularFile(const fs::path& file) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  struct stat st;
+  std::optional<std::string> bytes;
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
+    std::string data(static_cast<std::size_t>(st.st_size), '\0');
+    std::size_t got = 0;
+    ssize_t n = 1;
+    while (got < data.size() && (n = ::read(fd, data.data() + got, data.size() - got)) > 0) {
+      got += static_cast<std::size_t>(n);
+    }
+    if (got == data.size()) bytes = std::move(data);
+  }
+  ::close(fd);
+  return bytes;
+}
+
+// A tool (the compiler, the linker) that the machine, not the code, may have ended: killed by
+// SIGKILL (which the grader sends only at the time limit, and the kernel when memory runs out),
+// stopped at its time limit, or never started (no process or pipe to be had).
+bool endedByTheMachine(const Exit& e) {
+  return e.kind == Exit::Kind::TimedOut || e.kind == Exit::Kind::FailedToStart ||
+         (e.kind == Exit::Kind::Signaled && e.code == SIGKILL);
+}
 }  // namespace
 
 fs::path defaultKitPath() {
@@ -198,6 +225,7 @@ Kit loadKit(const fs::path& kitJson) {
     kit.modelsMain = j.value("modelsMain", std::vector<std::string>{});
     kit.linkInputs = j.at("linkInputs").get<std::vector<std::string>>();
     kit.starterObjects = j.at("starterObjects").get<std::string>();
+    kit.knownObjects = j.value("knownObjects", std::string());
     kit.dir = j.at("dir").get<std::string>();
     for (const std::string& s : j.value("secrets", std::vector<std::string>{})) {
       kit.secrets.emplace_back(s);
@@ -263,7 +291,9 @@ void linkedProbes(const Kit& kit, Build& build, const std::vector<fs::path>& obj
     build.error = "cannot move the linked probe to " + build.probe.string() + ": " + ec.message();
     return;
   }
-  const Exit m = run(linkDir, linkCommand(kit, kit.modelsMain, objects, "a6_probe_models"));
+  Exit m = run(linkDir, linkCommand(kit, kit.modelsMain, objects, "a6_probe_models"));
+  if (endedByTheMachine(m))
+    m = run(linkDir, linkCommand(kit, kit.modelsMain, objects, "a6_probe_models"));
   build.modelsProbe = workDir / "a6_probe_models";
   fs::rename(linkDir / "a6_probe_models", build.modelsProbe, ec);
   if (!m.ok() || ec) {
@@ -340,7 +370,10 @@ void linkProbe(const Kit& kit, Build& build, std::vector<fs::path>& objects,
   const fs::path linkDir = workDir / "link";
   const auto linkStart = Clock::now();
   for (;;) {
-    const Exit e = run(linkDir, linkCommand(kit, kit.probeMain, objects, "a6_probe"));
+    Exit e = run(linkDir, linkCommand(kit, kit.probeMain, objects, "a6_probe"));
+    // A link the machine ended is not blamed on an object: it is done again, once.
+    if (endedByTheMachine(e))
+      e = run(linkDir, linkCommand(kit, kit.probeMain, objects, "a6_probe"));
     if (e.ok() && fs::is_regular_file(linkDir / "a6_probe", ec)) {
       linkedProbes(kit, build, objects, workDir, run);
       break;
@@ -456,7 +489,7 @@ std::string makeWorkDir(const fs::path& workDir) {
 class ProbeBuilder {
  public:
   ProbeBuilder(const Kit& kit, const Intake& intake, const fs::path& workDir,
-               const Limits& compileLimits, double budgetSeconds, const ObjectCache* cache)
+               const Limits& compileLimits, double budgetSeconds)
       : kit_(kit),
         intake_(intake),
         workDir_(workDir),
@@ -465,7 +498,6 @@ class ProbeBuilder {
         end_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                 std::chrono::duration<double>(budgetSeconds))),
         linkView_(viewOfTools(kit, workDir, sourceDirs(intake), true)),
-        cache_(cache != nullptr && cache->on() ? cache : nullptr),
         objects_(kTaskFiles.size()) {
     build_.tasks.resize(kTaskFiles.size());
   }
@@ -547,21 +579,45 @@ class ProbeBuilder {
       return;
     }
     const fs::path source = absoluteClean(found->second);
-    const std::optional<std::string> text = cache_ ? readRegularFile(source) : std::nullopt;
-    if (text && reuse(i, *text)) return;
-    const Exit e = runCompiler(i, source);
-    // Kept only from a compile with every protection on: its object depends on the text alone.
-    if (text && task.status == TaskBuild::Status::Compiled && e.notes.empty()) {
-      if (const std::string why = cache_->keep(task.file, *text, task.object, task.messages);
-          !why.empty()) {
-        addNote("the object cache: " + why);
-      }
+    if (useKnownObject(i, source)) return;
+    Exit e = runCompiler(i, source);
+    // A compile the grader's side ended (killed by a signal it did not send, a tool that could
+    // not start, the time limit on a busy machine) is done again, once, while the budget lasts:
+    // only a failure that repeats is charged.
+    if (endedByTheMachine(e) && Clock::now() < end_) {
+      addNote("the compile of " + task.file + " " + e.describe() + ": it was done again");
+      e = runCompiler(i, source);
     }
   }
 
+  // Task i from the kit's prebuilt objects (Kit::knownObjects) when its file is, byte for byte,
+  // a text the grader's own build compiled with the kit's compiler and flags: nothing a
+  // submission wrote is ever shared with another.
+  bool useKnownObject(std::size_t i, const fs::path& source) {
+    TaskBuild& task = build_.tasks[i];
+    if (kit_.knownObjects.empty()) return false;
+    const fs::path known = kit_.knownObjects / (stem(task.file) + ".o");
+    const std::optional<std::string> ours = readRegularFile(kit_.knownObjects / task.file);
+    if (!ours || readRegularFile(source) != ours) return false;
+    const auto t0 = Clock::now();
+    const fs::path dir = workDir_ / "obj" / stem(task.file);
+    const fs::path object = dir / (stem(task.file) + ".o");
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+    fs::create_directories(dir, ec);
+    fs::copy_file(known, object, fs::copy_options::overwrite_existing, ec);
+    if (ec) return false;
+    fs::permissions(dir, kOpenFolder, ec);
+    fs::permissions(object, kReadableFile, ec);
+    task.status = TaskBuild::Status::Compiled;
+    task.object = objects_[i] = object;
+    task.known = true;
+    task.seconds = secondsSince(t0);
+    return true;
+  }
+
   // Compiles task i's file, `source`, and judges the outcome. The compiler sees its own file
-  // and folder only, and __FILE__ is the file's name alone: the object depends on nothing else
-  // the submission holds or is named (what lets the object cache key it by the file's text).
+  // and folder only, and __FILE__ is the file's name alone.
   Exit runCompiler(std::size_t i, const fs::path& source) {
     TaskBuild& task = build_.tasks[i];
     std::vector<std::string> argv = {kit_.compiler};
@@ -574,32 +630,6 @@ class ProbeBuilder {
     task.seconds = secondsSince(t0);
     judge(i, source, e);
     return e;
-  }
-
-  // Task i from the object cache, when it holds `text` for its file: the object is copied into
-  // the work folder (where the sandboxed linker reads it) and checked as a fresh one is.
-  bool reuse(std::size_t i, const std::string& text) {
-    TaskBuild& task = build_.tasks[i];
-    const std::optional<CachedCompile> hit = cache_->find(task.file, text);
-    if (!hit) return false;
-    const auto t0 = Clock::now();
-    const fs::path dir = workDir_ / "obj" / stem(task.file);
-    const fs::path object = dir / (stem(task.file) + ".o");
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-    fs::create_directories(dir, ec);
-    std::ofstream out(object, std::ios::binary | std::ios::trunc);
-    out << hit->object;
-    out.close();
-    if (ec || !out || !runsBeforeFilter(object).empty()) return false;
-    fs::permissions(dir, kOpenFolder, ec);
-    fs::permissions(object, kReadableFile, ec);
-    task.status = TaskBuild::Status::Compiled;
-    task.messages = hit->messages;
-    task.object = objects_[i] = object;
-    task.reused = true;
-    task.seconds = secondsSince(t0);
-    return true;
   }
 
   // Task i's status and messages from what the compiler did.
@@ -647,15 +677,13 @@ class ProbeBuilder {
   const double budgetSeconds_;
   const Clock::time_point end_;
   const SandboxView linkView_;
-  const ObjectCache* const cache_;  // null: compile every file
   Build build_;
   std::vector<fs::path> objects_;  // the object linked for each task
   std::mutex notesMutex_;
 };
 
 Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& workDirIn,
-                          const Limits& compileLimits, int jobs, double budgetSeconds,
-                          const ObjectCache* cache) {
+                          const Limits& compileLimits, int jobs, double budgetSeconds) {
   const auto start = Clock::now();
   Build build;
   const fs::path workDir = absoluteClean(workDirIn);
@@ -664,7 +692,7 @@ Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& 
   } else if (std::string e = makeWorkDir(workDir); !e.empty()) {
     build.error = e;
   } else {
-    build = ProbeBuilder(kit, intake, workDir, compileLimits, budgetSeconds, cache).run(jobs);
+    build = ProbeBuilder(kit, intake, workDir, compileLimits, budgetSeconds).run(jobs);
   }
   build.seconds = secondsSince(start);
   return build;
@@ -672,10 +700,9 @@ Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& 
 }  // namespace
 
 Build buildProbe(const Kit& kit, const Intake& intake, const fs::path& workDir,
-                 const Limits& compileLimits, int jobs, double budgetSeconds,
-                 const ObjectCache* cache) {
+                 const Limits& compileLimits, int jobs, double budgetSeconds) {
   try {
-    return buildProbeUnguarded(kit, intake, workDir, compileLimits, jobs, budgetSeconds, cache);
+    return buildProbeUnguarded(kit, intake, workDir, compileLimits, jobs, budgetSeconds);
   } catch (const std::exception& e) {
     Build build;
     build.error = std::string("building the probe failed: ") + e.what();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -12,8 +13,6 @@
 #include "sandbox/sandbox.h"
 
 namespace a6::grader {
-
-class ObjectCache;  // build/object_cache.h
 
 /// What was built once, read from BUILD/grader/kit.json (written by CMake,
 /// grader/build/build.cmake). What a compile reads besides the system headers sits in
@@ -29,6 +28,10 @@ struct Kit {
                                           ///< library, Box2D, libseccomp
   std::filesystem::path starterObjects;   ///< folder with <task>.o (and <task>.syms: its
                                           ///< defined symbols, demangled) of the starter
+  std::filesystem::path knownObjects;     ///< folder with <task>.cpp and <task>.o: texts the
+                                          ///< grader's own build compiled (the solution's),
+                                          ///< used for a file equal to one byte for byte; ""
+                                          ///< for none. Outside `dir`: hidden from every tool
   std::filesystem::path dir;              ///< the kit folder: staged headers, starter objects
   /// Hidden from the compiler and the linker, except `dir`, the work folder and the student's
   /// files: the repository (solution, hidden tests, goldens) and the build tree. A caller may
@@ -67,8 +70,8 @@ struct TaskBuild {
   std::string messages;          ///< the compiler's (and linker's) output (capped), for the report
   double seconds = 0;            ///< compile time, s
   std::filesystem::path object;  ///< Compiled: the object file (relinkProbe links it again)
-  bool reused = false;           ///< Compiled from the object cache: the same text compiled
-                                 ///< before against the same kit (build/object_cache.h)
+  bool known = false;            ///< Compiled: the kit's prebuilt object of this very text
+                                 ///< (Kit::knownObjects), not compiled here
   bool usesStarter() const { return status != Status::Compiled; }
 };
 
@@ -101,11 +104,13 @@ constexpr double kDefaultBuildBudget = 150;
 /// the probe, workDir/a6_probe. workDir is created; objects go to workDir/obj/<task>/, the link
 /// happens in workDir/link/. Each compile sees the kit, its own file and its own object folder
 /// only. An object holding code that runs before the probe's seccomp filter (an ifunc resolver,
-/// a .preinit_array entry) is replaced by the starter's. With a `cache` that is on, a file whose
-/// text it holds is not compiled (TaskBuild::reused), and each file that compiles is kept there.
+/// a .preinit_array entry) is replaced by the starter's. A file equal byte for byte to one of
+/// the kit's known texts gets the kit's object (TaskBuild::known); nothing compiled from a
+/// submission is kept for another. A compile or link that the machine ended (killed by SIGKILL,
+/// its time limit, no process to start) is done again once while the budget lasts.
 Build buildProbe(const Kit& kit, const Intake& intake, const std::filesystem::path& workDir,
                  const Limits& compileLimits = defaultCompileLimits(), int jobs = 2,
-                 double budgetSeconds = kDefaultBuildBudget, const ObjectCache* cache = nullptr);
+                 double budgetSeconds = kDefaultBuildBudget);
 
 /// Links a probe again, in workDir, from the objects `compiled` holds, with the starter's object
 /// for the files in `starterFor` (and for every file that did not compile): no compiling.

@@ -27,8 +27,10 @@ void BudgetedStudent::startTest(double s) {
   answersAtStart_ = hooks_.forceAnswers ? hooks_.forceAnswers() : 0;
   deadline_ = Clock::now() + seconds(s);
   lastFailure_.clear();
+  machineFault_ = graderFault_ = false;
   closeCheck();
   if (hooks_.newCheck) hooks_.newCheck();
+  if (hooks_.startCheck) hooks_.startCheck(s, budgetEnd_);
 }
 
 int BudgetedStudent::checksOutOfTime() {
@@ -43,7 +45,7 @@ void BudgetedStudent::closeCheck() {
   outOfTime_ = false;
 }
 
-std::string BudgetedStudent::refusal(double& remaining) {
+std::string BudgetedStudent::refusal() {
   const double overall = secondsUntil(budgetEnd_);
   if (overall < 0.01) {
     budgetSpent_ = true;
@@ -54,19 +56,32 @@ std::string BudgetedStudent::refusal(double& remaining) {
   }
   const double allowance =
       hooks_.forceAnswers ? forceWaitAllowance(hooks_.forceAnswers() - answersAtStart_, limit_) : 0;
-  remaining = secondsUntil(deadline_) + allowance;
-  if (remaining < 0.01) {
+  if (secondsUntil(deadline_) + allowance < 0.01) {
     outOfTime_ = true;
+    machineFault_ = true;  // the time ran out between requests: a busy machine, maybe
     std::ostringstream out;
     out << "this check's time limit of " << limit_
         << " s ran out (is there an endless loop, or a loop that runs far too often?)";
     return out.str();
   }
-  remaining = std::min(remaining, overall);
   return "";
 }
 
+double BudgetedStudent::budgetLeft() const { return secondsUntil(budgetEnd_); }
+
 void BudgetedStudent::interpret(harness::Outcome& result) {
+  switch (result.fault) {
+    case harness::Fault::TimedOut:
+      machineFault_ = true;
+      break;
+    case harness::Fault::Killed:
+    case harness::Fault::StartFailed:
+    case harness::Fault::GraderError:
+      machineFault_ = graderFault_ = true;
+      break;
+    default:
+      break;
+  }
   switch (result.fault) {
     case harness::Fault::None:
       return;
@@ -92,12 +107,10 @@ Result BudgetedStudent::call(Call&& forward) {
     result.fail(harness::Fault::Unavailable, reworded(unavailable_));
     return result;
   }
-  double remaining = 0;
-  if (std::string why = refusal(remaining); !why.empty()) {
+  if (std::string why = refusal(); !why.empty()) {
     result.fail(harness::Fault::NotRun, reworded(std::move(why)));
     return result;
   }
-  if (hooks_.setTimeout) hooks_.setTimeout(remaining);
   try {
     result = forward();
     interpret(result);
@@ -108,6 +121,7 @@ Result BudgetedStudent::call(Call&& forward) {
   } catch (...) {
     result.fail(harness::Fault::GraderError, "the grader could not run your code (unknown error)");
   }
+  machineFault_ = graderFault_ = true;
   return result;
 }
 

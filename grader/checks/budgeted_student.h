@@ -25,10 +25,11 @@ class BudgetedStudent final : public harness::StudentCode {
  public:
   using Clock = std::chrono::steady_clock;
 
-  /// The probe's hooks (all may be empty): give the probe a request's time limit, give it a new
-  /// check's starts, count the forces the grader answered it, count its stopped requests.
+  /// The probe's hooks (all may be empty): give the probe a new check's time window (its limit,
+  /// and the end of the time budget no request may pass), give it a new check's starts, count
+  /// the forces the grader answered it, count its stopped requests.
   struct Hooks {
-    std::function<void(double)> setTimeout;
+    std::function<void(double, Clock::time_point)> startCheck;
     std::function<void()> newCheck;
     std::function<std::size_t()> forceAnswers;
     std::function<int()> probeTimeouts;
@@ -50,6 +51,15 @@ class BudgetedStudent final : public harness::StudentCode {
   /// limit reached between requests), each counted once, plus one when the time budget of all
   /// checks was spent.
   int checksOutOfTime();
+  /// Whether the machine may have ended the running check, not the code: a request stopped at a
+  /// time limit or killed by a SIGKILL the grader did not send, a probe that could not start, a
+  /// grader error. Such a check is run again (runChecks).
+  bool machineMayHaveEndedIt() const { return machineFault_; }
+  /// Whether the running check failed for the grader alone (the probe could not start, was
+  /// killed, the grader erred): run again, a repeat of it is the machine's, not the code's.
+  bool graderFailedIt() const { return graderFault_; }
+  /// The time left of the budget of all checks, s.
+  double budgetLeft() const;
 
   harness::SpringForceResult springForce(const harness::SpringForceRequest& r) override;
   harness::ForcesResult forces(const harness::ForcesRequest& r) override;
@@ -64,7 +74,7 @@ class BudgetedStudent final : public harness::StudentCode {
   template <class Result, class Call>
   Result call(Call&& forward);
   // Why a request is not sent at all (the budget or the check's time spent), or "".
-  std::string refusal(double& remaining);
+  std::string refusal();
   // The probe's answer, with a used-up check's starts said in the check's terms.
   void interpret(harness::Outcome& result);
   // Counts the check that just ended if it ran out of time, once however many of its
@@ -78,6 +88,8 @@ class BudgetedStudent final : public harness::StudentCode {
   std::string startError_;
   // The running check ran out of its time between requests; the probes' time-outs when it began.
   bool outOfTime_ = false;
+  bool machineFault_ = false;  // see machineMayHaveEndedIt()
+  bool graderFault_ = false;   // see graderFailedIt()
   int timeoutsAtStart_ = 0;
   int checksOutOfTime_ = 0;
   bool budgetSpent_ = false;

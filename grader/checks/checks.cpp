@@ -76,21 +76,74 @@ std::unique_ptr<ProbePair> startProbes(const ChecksInput& in) {
 BudgetedStudent::Hooks hooksOf(ProbePair* pair) {
   BudgetedStudent::Hooks hooks;
   if (pair == nullptr) return hooks;
-  hooks.setTimeout = [pair](double seconds) { pair->setRequestTimeout(seconds); };
+  hooks.startCheck = [pair](double limit, BudgetedStudent::Clock::time_point hardEnd) {
+    pair->startCheck(limit, hardEnd);
+  };
   hooks.forceAnswers = [pair] { return pair->forceAnswers(); };
   hooks.probeTimeouts = [pair] { return pair->incidents().timeouts; };
   hooks.newCheck = [pair] { pair->allowMoreStarts(kStartsPerCheck); };
   return hooks;
 }
 
-// RUN_ALL_TESTS with a Collector; how many checks were skipped.
-int runAll(const Rubric& rubric, ChecksRun& run, BudgetedStudent& student, bool progress) {
-  auto* collector = new Collector(
-      rubric, run.tests, [&student](double limit) { student.startTest(limit); }, progress);
-  ::testing::UnitTest::GetInstance()->listeners().Append(collector);  // GoogleTest owns it
+// RUN_ALL_TESTS with a Collector into `tests`; how many checks were skipped.
+int runAll(const Rubric& rubric, std::vector<TestOutcome>& tests, BudgetedStudent& student,
+           bool progress) {
+  Collector collector(
+      rubric, tests, [&student](double limit) { student.startTest(limit); },
+      [&student](TestOutcome& t) {
+        t.machineMayHaveEndedIt = student.machineMayHaveEndedIt();
+        t.graderFailedIt = student.graderFailedIt();
+      },
+      progress);
+  ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
+  listeners.Append(&collector);
   // Its status only repeats what the collector saw.
-  if (RUN_ALL_TESTS() != 0 && progress) std::fprintf(stderr, "a6_grade: some checks failed\n");
-  return collector->skipped();
+  const int status = RUN_ALL_TESTS();
+  listeners.Release(&collector);
+  if (status != 0 && progress) std::fprintf(stderr, "a6_grade: some checks failed\n");
+  return collector.skipped();
+}
+
+// The failed checks that the machine may have ended (a time limit, a probe killed or that did
+// not start, a grader error) run again, once, while the time budget lasts: only a failure that
+// repeats is charged, named for what it is. One that the grader alone failed twice makes the
+// grading the machine's failure (an error: a6_batch grades it again), never a silent 0.
+void runAgainWhatTheMachineEnded(const Rubric& rubric, const std::string& filter, ChecksRun& run,
+                                 BudgetedStudent& student, bool progress) {
+  std::string again;
+  int count = 0;
+  for (const TestOutcome& t : run.tests) {
+    if (t.passed || !t.machineMayHaveEndedIt) continue;
+    again += (again.empty() ? "" : ":") + t.name;
+    ++count;
+  }
+  if (count == 0 || student.budgetLeft() < 1) return;
+  A6_GTEST_FLAG_SET(filter, again);
+  std::vector<TestOutcome> second;
+  runAll(rubric, second, student, progress);
+  A6_GTEST_FLAG_SET(filter, filter.empty() ? std::string("*") : filter);
+  int passed = 0;
+  for (TestOutcome& t : second) {
+    passed += t.passed ? 1 : 0;
+    for (TestOutcome& first : run.tests) {
+      if (first.name == t.name) first = std::move(t);
+    }
+  }
+  run.notes.push_back(std::to_string(count) +
+                      " checks were run again because the machine may have ended them (a time "
+                      "limit, a probe killed or not started): " +
+                      std::to_string(passed) + " passed the second time");
+}
+
+// A check the grader alone failed, twice: the grading cannot stand.
+void flagMachineFailures(ChecksRun& run) {
+  for (const TestOutcome& t : run.tests) {
+    if (t.passed || !t.graderFailedIt) continue;
+    run.errors.push_back("regrade: the grading machine failed (" + t.name +
+                         ": the probe could not be started, was killed or the grader erred, "
+                         "twice)");
+    return;
+  }
 }
 
 // What the probes did, for the report.
@@ -223,7 +276,9 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
   gStudent = &watched;
   int skipped = 0;
   try {
-    skipped = runAll(rubric, run, student, in.progress);
+    skipped = runAll(rubric, run.tests, student, in.progress);
+    runAgainWhatTheMachineEnded(rubric, in.filter, run, student, in.progress);
+    flagMachineFailures(run);
   } catch (const std::exception& e) {
     run.errors.push_back(std::string("running the checks failed: ") + e.what());
   }

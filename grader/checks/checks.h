@@ -61,6 +61,7 @@ struct ChecksInput {
   /// Non-empty when there is no probe to run (the build failed): every request fails with it.
   std::string unavailable;
   double timeBudget = kDefaultTimeBudget;
+  std::string filter;  ///< the checks registered to run ("": all), restored after a re-run
   bool progress = false;
   bool replays = true;  ///< run each imaged scene once more for the report's replays
 };

@@ -62,6 +62,7 @@ void Collector::OnTestEnd(const ::testing::TestInfo& info) {
   const double agreement = a6::test::comparisonsOf(info).agreement;
   current_.agreement = agreement > a6::test::kBeyondDoubleRounding ? agreement : 0;
   current_.images = imagesOf(result);
+  if (endCheck_) endCheck_(current_);
   if (progress_) {
     std::fprintf(stderr, "  %-6s %s (%.2f s)\n", current_.passed ? "ok" : "FAILED",
                  current_.name.c_str(), current_.seconds);

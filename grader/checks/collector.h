@@ -16,11 +16,17 @@ namespace a6::grader {
 
 class Collector : public ::testing::EmptyTestEventListener {
  public:
-  /// `startCheck(seconds)` runs as each check starts, with its time limit; `progress` prints a
-  /// line per check on stderr.
+  /// `startCheck(seconds)` runs as each check starts, with its time limit; `endCheck(outcome)` as
+  /// it ends, to mark what the machine may have done to it; `progress` prints a line per check
+  /// on stderr.
   Collector(const Rubric& rubric, std::vector<TestOutcome>& out,
-            std::function<void(double)> startCheck, bool progress)
-      : rubric_(rubric), out_(out), startCheck_(std::move(startCheck)), progress_(progress) {}
+            std::function<void(double)> startCheck, std::function<void(TestOutcome&)> endCheck,
+            bool progress)
+      : rubric_(rubric),
+        out_(out),
+        startCheck_(std::move(startCheck)),
+        endCheck_(std::move(endCheck)),
+        progress_(progress) {}
 
   int skipped() const { return skipped_; }
 
@@ -36,6 +42,7 @@ class Collector : public ::testing::EmptyTestEventListener {
   const Rubric& rubric_;
   std::vector<TestOutcome>& out_;
   std::function<void(double)> startCheck_;
+  std::function<void(TestOutcome&)> endCheck_;
   bool progress_;
   TestOutcome current_;
   std::string skipMessage_;

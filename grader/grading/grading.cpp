@@ -13,7 +13,6 @@
 #include <sstream>
 
 #include "build/build.h"
-#include "build/object_cache.h"
 #include "build/startup.h"
 #include "common/fnv1a.h"
 #include "intake/intake.h"
@@ -117,7 +116,6 @@ class Grading {
   std::optional<int> registerChecks();
   void build();
   void buildWith(Kit& kit);
-  ObjectCache openObjectCache(Kit& kit);
   void check();
   void endWhatWasLeftRunning();
   void nameMistakes();
@@ -283,19 +281,12 @@ void Grading::build() {
 }
 
 void Grading::buildWith(Kit& kit) {
-  const ObjectCache cache = openObjectCache(kit);
   secrets_ = kit.secrets;
   report_.build = buildProbe(kit, report_.intake, work_ / "build", defaultCompileLimits(),
-                             std::max(1, options_.jobs), kDefaultBuildBudget, &cache);
-  // For the TA, not the student's report: the cache's folder, whether another text was seen.
+                             std::max(1, options_.jobs), kDefaultBuildBudget);
+  // For the TA, not the student's report: what the sandbox could not do, compiles done again.
   for (const std::string& note : report_.build.notes) {
     std::fprintf(stderr, "a6_grade: build: %s\n", note.c_str());
-  }
-  if (cache.on() && !options_.quiet) {
-    const auto reused = std::count_if(report_.build.tasks.begin(), report_.build.tasks.end(),
-                                      [](const TaskBuild& t) { return t.reused; });
-    std::fprintf(stderr, "a6_grade: %ld of the task files' objects came from the object cache\n",
-                 static_cast<long>(reused));
   }
   // Each task already fell back to the starter where it had to: a probe that still does not
   // link is the kit's fault, not the submission's.
@@ -311,23 +302,6 @@ void Grading::buildWith(Kit& kit) {
   if (!unavailable_.empty()) ++report_.incidents.startFailures;
 }
 
-// --object-cache: hidden from the compiler and the probe (it holds other submissions' objects).
-// Off where the student's code runs as this user (not root): it could write in the cache. What
-// goes wrong with it is the TA's business (stderr), never in the student's report.
-ObjectCache Grading::openObjectCache(Kit& kit) {
-  if (options_.objectCache.empty()) return {};
-  if (geteuid() != 0) {
-    std::fprintf(stderr,
-                 "a6_grade: the object cache was not used: not root, so the student's code runs "
-                 "as this user and could write in it (every file was compiled)\n");
-    return {};
-  }
-  kit.secrets.push_back(fs::absolute(options_.objectCache));
-  ObjectCache cache(options_.objectCache, kitFingerprint(kit));
-  if (!cache.error().empty()) std::fprintf(stderr, "a6_grade: %s\n", cache.error().c_str());
-  return cache;
-}
-
 // 3. Run the checks here, against the probe.
 void Grading::check() {
   ChecksInput in;
@@ -339,6 +313,7 @@ void Grading::check() {
   in.gid = kSandboxGid;
   in.unavailable = unavailable_;
   in.timeBudget = options_.timeBudget;
+  in.filter = options_.filter;
   in.progress = !options_.quiet;
   in.replays = options_.filter.empty();
   if (!options_.quiet)
@@ -358,11 +333,11 @@ void Grading::check() {
   replayFolder_ = run.replayFolder;
 }
 
-// Whatever the submission left running: our re-parented children, and every process of its
-// user (a new session, any name).
+// Whatever the submission left running: our re-parented children; and where there are no pid
+// namespaces (which end what a sandbox started with it), every process of its user.
 void Grading::endWhatWasLeftRunning() {
   process::endStrayChildren({});
-  if (claim_.held()) {
+  if (claim_.held() && !process::pidNamespaces()) {
     if (const std::string e = process::endProcessesOf(claim_.uid()); !e.empty()) fail(e);
   }
 }

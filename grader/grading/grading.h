@@ -19,11 +19,10 @@ namespace a6::grader {
 
 /// What a6_grade's command line says about one grading (grader/main.cpp).
 struct GradeOptions {
-  std::string submission;         ///< a folder, an archive or one task file
-  std::string out;                ///< where results.json and report.html go
-  std::string kit;                ///< the kit description ("": BUILD/grader/kit.json)
-  std::vector<std::string> hide;  ///< more secrets: a batch's other submissions and results
-  std::string objectCache;  ///< a folder of objects compiled before (build/object_cache.h), or ""
+  std::string submission;             ///< a folder, an archive or one task file
+  std::string out;                    ///< where results.json and report.html go
+  std::string kit;                    ///< the kit description ("": BUILD/grader/kit.json)
+  std::vector<std::string> hide;      ///< more secrets: a batch's other submissions and results
   std::optional<uid_t> sandboxUid;    ///< who compiles and runs the probe, as root (default: a free
                                       ///< uid claimed for this grading, sandbox/process.h)
   std::optional<std::uint64_t> seed;  ///< default: a hash of the files taken

@@ -122,18 +122,24 @@ int msUntil(Clock::time_point deadline) {
   return static_cast<int>(std::clamp<long long>(ms + 1, 0, 1000));
 }
 
-// A request's deadline: its time limit, plus the allowance for the forces the grader answered
-// meanwhile (forceWaitAllowance), so it moves on while those answers come in.
+// A request's deadline: the end of its time window (the request's own, or the check's), plus the
+// allowance for the forces the grader answered within that window (forceWaitAllowance), counted
+// once from the window's start; never past `hardEnd` (the end of the time all checks together
+// may take).
 struct Deadline {
   Clock::time_point base;
   double limit = 0;                                   // s
   const std::atomic<std::size_t>* answers = nullptr;  // the grader's force answers so far
   std::size_t answersAtStart = 0;
+  Clock::time_point hardEnd = Clock::time_point::max();
 
   Clock::time_point at() const {
-    if (answers == nullptr) return base;
-    const double extra = forceWaitAllowance(*answers - answersAtStart, limit);
-    return base + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(extra));
+    Clock::time_point end = base;
+    if (answers != nullptr) {
+      const double extra = forceWaitAllowance(*answers - answersAtStart, limit);
+      end += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(extra));
+    }
+    return std::min(end, hardEnd);
   }
 };
 
@@ -276,7 +282,12 @@ class ForceServer {
 struct ProbeClient::Impl {
   fs::path probe, workRoot;
   Limits limits;
-  double timeout = 10;
+  double timeout = 10;  // a request's own limit, when no check window is set
+  // The running check's window (startCheck): every request of the check ends by its end.
+  bool inCheck = false;
+  Clock::time_point checkStart, checkHardEnd;
+  double checkLimit = 0;
+  std::size_t answersAtCheckStart = 0;
   std::vector<fs::path> hide, reveal;
   int maxStarts = 50;
   uid_t uid = 65534;
@@ -421,7 +432,9 @@ struct ProbeClient::Impl {
       alive = process->alive();
     }
     const Exit exit = shutdown(alive ? "closed its answer pipe" : "crashed");
-    ++incidents.crashes;
+    // SIGKILL is sent by the grader only at a time limit (not this path): the machine ended it.
+    const bool killed = !alive && exit.kind == Exit::Kind::Signaled && exit.code == SIGKILL;
+    if (!killed) ++incidents.crashes;
     std::string text = alive ? "the probe closed its answer pipe without answering, so it was "
                                "stopped"
                              : "the probe crashed: " + exit.describe();
@@ -430,6 +443,11 @@ struct ProbeClient::Impl {
     }
     const std::string last = tail(exit.output, 10, 2000);
     if (!last.empty()) text += "\nthe last lines it printed:\n" + last;
+    if (killed) {
+      return failure(Fault::Killed,
+                     "the grading machine stopped your code (SIGKILL, not sent by the grader: out "
+                     "of memory, or another program): a grader problem, not yours");
+    }
     return failure(Fault::Crashed, text);
   }
 
@@ -439,8 +457,17 @@ struct ProbeClient::Impl {
     auto timedOut = [&] {
       shutdown("ran out of time");
       ++incidents.timeouts;
-      return failure(Fault::TimedOut, "your code took longer than " + seconds(timeout) +
-                                          " s on this request (the time limit), so it was stopped");
+      if (inCheck && deadline.at() >= deadline.hardEnd) {
+        return failure(Fault::TimedOut,
+                       "ran out of time: the time all checks together may take was used up while "
+                       "this request ran, so it was stopped");
+      }
+      return failure(
+          Fault::TimedOut,
+          "ran out of time: " + seconds(inCheck ? checkLimit : timeout) +
+              (inCheck ? " s, this check's time limit (is there an endless loop, or a "
+                         "loop that runs far too often?), so your code was stopped"
+                       : " s, the time limit of this request, so your code was stopped"));
     };
     Io io = sendAll(toProbe, bytes, deadline);
     if (io == Io::TimedOut) return timedOut();
@@ -475,7 +502,7 @@ struct ProbeClient::Impl {
         !failed.ok()) {
       return failed;
     }
-    const std::optional<process::Info> info = process::describe(process->pid());
+    const std::optional<process::Info> info = process::describe(process->programPid());
     const bool filtered =
         info && info->seccompMode == 2 && (info->seccompFilters < 0 || info->seccompFilters >= 2);
     if (info && filtered && info->threads == 1) return {};
@@ -491,6 +518,18 @@ struct ProbeClient::Impl {
                        "start threads or change how the program starts)");
   }
 
+  // The running check's window, or this request's own.
+  Deadline requestDeadline() const {
+    auto after = [](Clock::time_point t, double s) {
+      return t + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+    };
+    if (inCheck) {
+      return {after(checkStart, checkLimit), checkLimit, &forceAnswers, answersAtCheckStart,
+              checkHardEnd};
+    }
+    return {after(Clock::now(), timeout), timeout, &forceAnswers, forceAnswers.load()};
+  }
+
   template <typename Result>
   Result call(const std::function<json()>& encode, Result (*decode)(const json&)) {
     std::lock_guard<std::mutex> lock(mutex);
@@ -504,9 +543,7 @@ struct ProbeClient::Impl {
       return failed;
     }
     checkQuiet();
-    const Deadline deadline{Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                               std::chrono::duration<double>(timeout)),
-                            timeout, &forceAnswers, forceAnswers.load()};
+    const Deadline deadline = requestDeadline();
     Outcome why;
     if (!process) {
       why = ensureStarted();
@@ -543,6 +580,16 @@ ProbeClient::~ProbeClient() = default;
 void ProbeClient::setRequestTimeout(double seconds) {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   if (seconds > 0) impl_->timeout = seconds;
+  impl_->inCheck = false;
+}
+
+void ProbeClient::startCheck(double limit, std::chrono::steady_clock::time_point hardEnd) {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  impl_->inCheck = true;
+  impl_->checkStart = Clock::now();
+  impl_->checkLimit = limit;
+  impl_->checkHardEnd = hardEnd;
+  impl_->answersAtCheckStart = impl_->forceAnswers.load();
 }
 
 void ProbeClient::setHidden(std::vector<fs::path> hide, std::vector<fs::path> reveal) {
@@ -638,6 +685,11 @@ ProbePair::ProbePair(std::unique_ptr<ProbeClient> plain, std::unique_ptr<ProbeCl
 void ProbePair::setRequestTimeout(double seconds) {
   plain_->setRequestTimeout(seconds);
   models_->setRequestTimeout(seconds);
+}
+
+void ProbePair::startCheck(double limit, std::chrono::steady_clock::time_point hardEnd) {
+  plain_->startCheck(limit, hardEnd);
+  models_->startCheck(limit, hardEnd);
 }
 
 void ProbePair::allowMoreStarts(int more) {

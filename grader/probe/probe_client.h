@@ -11,6 +11,7 @@
 // at once: a submission that crashes on every request must not take forever to grade.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -60,8 +61,13 @@ class ProbeClient final : public harness::StudentCode {
   ProbeClient(std::filesystem::path probe, std::filesystem::path workRoot, Limits limits);
   ~ProbeClient() override;
 
-  /// The wall-clock limit for the next requests (the rubric's per-test limit), s.
+  /// Each next request may take `seconds` of wall-clock time from its start (plus the force
+  /// allowance); ends a check window.
   void setRequestTimeout(double seconds);
+  /// A check starts now: its requests together may take `limit` seconds of wall-clock time plus
+  /// the allowance for the forces answered since now (counted once, here), and none runs past
+  /// `hardEnd`.
+  void startCheck(double limit, std::chrono::steady_clock::time_point hardEnd);
   /// Paths the probe must not see (the solution, hidden tests, goldens: Kit::secrets), and
   /// paths inside them it must (SandboxSpec::hide, reveal). For the next probe started.
   void setHidden(std::vector<std::filesystem::path> hide,
@@ -115,6 +121,7 @@ class ProbePair final : public harness::StudentCode {
 
   /// For both probes (see ProbeClient).
   void setRequestTimeout(double seconds);
+  void startCheck(double limit, std::chrono::steady_clock::time_point hardEnd);
   /// Each probe may be started `more` more times from now on (a new check's restarts).
   void allowMoreStarts(int more);
 

@@ -36,6 +36,12 @@ struct TestOutcome {
   double agreement = 0;
   /// For golden-image checks: paths of the images (student, reference, difference), if any.
   std::vector<std::filesystem::path> images;
+  /// The machine may have ended it, not the code (a time limit, a probe killed or not started):
+  /// a failed check so marked is run again (checks stage). Not in results.json.
+  bool machineMayHaveEndedIt = false;
+  /// It failed for the grader alone (a probe that could not start or was killed, a grader
+  /// error): a repeat makes the grading the machine's failure, never the student's 0.
+  bool graderFailedIt = false;
 };
 
 /// One rubric item, scored.

@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <grp.h>
 #include <pwd.h>
+#include <sched.h>
 #include <sys/file.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
@@ -17,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <thread>
 
@@ -27,9 +29,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr uid_t kNobody = 65534;
 constexpr gid_t kNogroup = 65534;
-constexpr uid_t kLowestSandboxUid = 60001;  // the claimed range is [60001, 65533]
+// Where every uid is mapped, the sandbox's uids are drawn from [1e6, 2e9]; in a user namespace
+// that maps fewer (a container's 65536), from the top of the mapped range, below nobody's.
+constexpr unsigned long kDrawFrom = 1000000, kDrawTo = 2000000000;
+constexpr unsigned long kSmallRangeFrom = 60001, kSmallRangeTo = 65533;
 
 void pause(int milliseconds) {
   std::this_thread::sleep_for(std::chrono::milliseconds(milliseconds));
@@ -106,6 +110,56 @@ bool runsAs(uid_t uid) {
   return WIFEXITED(*status) && WEXITSTATUS(*status) == 0;
 }
 
+// The uids this process may switch to: the widest range its user namespace maps
+// (/proc/self/uid_map), cut to where sandbox uids are drawn.
+std::pair<unsigned long, unsigned long> drawRange() {
+  std::ifstream map("/proc/self/uid_map");
+  unsigned long inside = 0, outside = 0, count = 0, bestFrom = 0, bestCount = 0;
+  while (map >> inside >> outside >> count) {
+    if (count > bestCount) bestFrom = inside, bestCount = count;
+  }
+  if (bestCount == 0) bestFrom = 0, bestCount = 65536;  // no map to read: the classic range
+  const unsigned long last = bestFrom + bestCount - 1;
+  if (bestFrom <= kDrawFrom && last >= kDrawTo) return {kDrawFrom, kDrawTo};
+  return {std::max(bestFrom + 1, kSmallRangeFrom), std::min(last, kSmallRangeTo)};
+}
+
+// True when some process in /proc runs as `uid`.
+bool inUse(uid_t uid, const std::vector<Info>& processes) {
+  return std::any_of(processes.begin(), processes.end(),
+                     [uid](const Info& p) { return p.realUid == uid || p.effectiveUid == uid; });
+}
+
+// A uid drawn at random that no account, process or other grading's lock holds; its lock in
+// `fd`. False (with `error`) when 200 draws found none.
+bool drawUnusedUid(int& fd, uid_t& uid, std::string& error) {
+  const auto [from, to] = drawRange();
+  if (from > to) {
+    error = "this user namespace maps no uid to run the sandbox as";
+    return false;
+  }
+  std::random_device entropy;
+  std::mt19937_64 draw((static_cast<std::uint64_t>(entropy()) << 32) ^ entropy() ^
+                       static_cast<std::uint64_t>(getpid()));
+  std::uniform_int_distribution<unsigned long> pick(from, to);
+  const std::vector<Info> processes = all();
+  for (int attempt = 0; attempt < 200; ++attempt) {
+    const auto candidate = static_cast<uid_t>(pick(draw));
+    if (getpwuid(candidate) != nullptr || inUse(candidate, processes)) continue;
+    if ((fd = lockUid(candidate)) < 0) continue;
+    if (inUse(candidate, all())) {  // taken between the two looks
+      ::close(fd);
+      fd = -1;
+      continue;
+    }
+    uid = candidate;
+    return true;
+  }
+  error = "no unused sandbox uid was found in " + std::to_string(from) + ".." + std::to_string(to) +
+          " (200 draws)";
+  return false;
+}
+
 }  // namespace
 
 std::optional<Info> describe(pid_t pid) {
@@ -136,6 +190,9 @@ std::optional<Info> describe(pid_t pid) {
       info.seccompFilters = std::atoi(rest.c_str());
     } else if (key == "NoNewPrivs") {
       info.noNewPrivs = std::atoi(rest.c_str()) == 1;
+    } else if (key == "NSpid") {
+      std::istringstream in(rest);
+      for (long pid; in >> pid;) info.nsPid = static_cast<pid_t>(pid);  // the innermost
     }
   }
   if (!any) return std::nullopt;
@@ -192,6 +249,25 @@ int endStrayChildren(const std::vector<pid_t>& keep) {
   return ended;
 }
 
+bool pidNamespaces() {
+  static const bool allowed = [] {
+    if (geteuid() != 0) return false;
+    const long pid = syscall(SYS_clone, CLONE_NEWPID | SIGCHLD, 0, 0, 0, 0);
+    if (pid == 0) _exit(0);
+    if (pid < 0) return false;
+    const std::optional<int> status = waitFor(static_cast<pid_t>(pid), 30);
+    return status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0;
+  }();
+  return allowed;
+}
+
+std::optional<pid_t> childInNamespace(pid_t parent, pid_t nsPid) {
+  for (const Info& p : all()) {
+    if (p.ppid == parent && p.nsPid == nsPid) return p.pid;
+  }
+  return std::nullopt;
+}
+
 std::string endProcessesOf(uid_t uid, double seconds) {
   if (uid == 0) return "refusing to end the processes of root";
   const auto start = Clock::now();
@@ -220,7 +296,7 @@ std::string endProcessesOf(uid_t uid, double seconds) {
 
 UidClaim::~UidClaim() {
   if (fd_ < 0) return;
-  endProcessesOf(uid_);
+  if (!pidNamespaces()) endProcessesOf(uid_);
   ::close(fd_);  // releases the lock
 }
 
@@ -254,21 +330,22 @@ UidClaim claimUid(std::optional<uid_t> wanted, std::string& error) {
       return claim;
     }
     claim.uid_ = *wanted;
-  } else {
-    for (uid_t uid = kNobody - 1; uid >= kLowestSandboxUid && claim.fd_ < 0; --uid) {
-      if (getpwuid(uid) != nullptr) continue;  // an account: someone else's processes
-      claim.fd_ = lockUid(uid);
-      claim.uid_ = uid;
+    // Its processes are not ours to end (another grading's, or what one left behind), unless
+    // there is no pid namespace to end what each sandbox starts: then they are found by uid.
+    if (pidNamespaces() && inUse(*wanted, all())) {
+      error = "sandbox uid " + std::to_string(*wanted) +
+              " is in use by processes this grading did not start: give another uid, or none "
+              "(a grading draws an unused one)";
+      return UidClaim{};
     }
-    if (claim.fd_ < 0) {
-      error = "every sandbox uid from " + std::to_string(kLowestSandboxUid) + " to " +
-              std::to_string(kNobody - 1) + " is held by another grading";
-      return claim;
+    if (!pidNamespaces()) {
+      if (const std::string e = endProcessesOf(*wanted); !e.empty()) {
+        error = "sandbox uid " + std::to_string(*wanted) + ": " + e;
+        return UidClaim{};
+      }
     }
-  }
-  if (const std::string e = endProcessesOf(claim.uid_); !e.empty()) {
-    error = "sandbox uid " + std::to_string(claim.uid_) + ": " + e;
-    return UidClaim{};
+  } else if (!drawUnusedUid(claim.fd_, claim.uid_, error)) {
+    return claim;
   }
   if (!runsAs(claim.uid_)) {
     error = "no process could run as sandbox uid " + std::to_string(claim.uid_);

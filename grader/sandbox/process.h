@@ -10,13 +10,24 @@
 // the grader is about to wait for (a6_batch hung forever on an a6_grade reaped that way). Every
 // wait here names its pid.
 //
-// Design note: a sandbox user per grading.
-// RLIMIT_NPROC counts every process of a user machine-wide, and a process that escaped its
-// sandbox (a new session, a name with a newline that a line-by-line /proc reader skips) can go
-// on killing whatever else runs as its user. So each grading claims a user of its own: a uid
-// without an account, held by a lock file for the whole grading, and every process of that uid
-// is ended before it is used and when the grading ends. Processes are found by their uid, read
-// from /proc/PID/status (where names are escaped), never by their name or parent.
+// Design note: a grading ends only what it started.
+// Other graders may run on the same machine: in the same checkout, another one, a chroot or a
+// container with its own /run (so its own lock files), sharing the host's uids. A grading never
+// signals a process it did not start: each sandboxed command runs in a pid namespace of its own
+// (grader/sandbox/sandbox.h), so whatever the code leaves running ends with it, and nothing here
+// searches the machine for processes to kill. Only where the kernel refuses pid namespaces (a
+// container without CAP_SYS_ADMIN) are the sandbox user's processes found by uid and ended,
+// and the grading's notes say so.
+//
+// Design note: a sandbox user per grading, unused machine-wide.
+// RLIMIT_NPROC counts every process of a user machine-wide (per user namespace), and file access
+// is per user. So each grading claims a user no one else runs as: a uid drawn at random from a
+// range far above any account (1e6 to 2e9 where the user namespace maps every uid; within the
+// mapped range otherwise), without an account, with no process in /proc, and held by a lock file
+// (a second guard for graders that share /run/lock). Two graders that cannot see each other's
+// processes or lock files (two containers) draw the same uid with a chance of about 1 in 2e9.
+// Processes are found by their uid, read from /proc/PID/status (where names are escaped), never
+// by their name or parent.
 #pragma once
 
 #include <sys/types.h>
@@ -44,6 +55,7 @@ struct Info {
   int seccompMode = -1;     ///< Seccomp: 0 none, 1 strict, 2 filter; -1 not shown
   int seccompFilters = -1;  ///< Seccomp_filters: (Linux 5.9+); -1 not shown
   bool noNewPrivs = false;  ///< NoNewPrivs: 1
+  pid_t nsPid = 0;          ///< its pid in its own (innermost) pid namespace (NSpid:)
 };
 
 /// The process `pid`, or nothing when it is gone (or /proc cannot be read).
@@ -62,6 +74,14 @@ std::optional<int> waitFor(pid_t pid, double seconds, bool* vanished = nullptr);
 /// were ended.
 int endStrayChildren(const std::vector<pid_t>& keep);
 
+/// Whether sandboxed children get a pid namespace each (root, and the kernel allows it; found
+/// once by trying). When false, what a submission leaves running is ended by its uid.
+bool pidNamespaces();
+
+/// The child of `parent` whose pid in its own namespace is `nsPid` (the program under a keeper:
+/// 2), found in /proc; nothing when there is none.
+std::optional<pid_t> childInNamespace(pid_t parent, pid_t nsPid);
+
 /// Ends every process whose real or effective uid is `uid` (never uid 0), found in /proc by
 /// uid whatever it is named: each is stopped (a stopped process cannot fork), then killed,
 /// through a pidfd so that a reused pid is never hit; repeated until /proc shows none alive or
@@ -69,8 +89,8 @@ int endStrayChildren(const std::vector<pid_t>& keep);
 /// why not.
 std::string endProcessesOf(uid_t uid, double seconds = 5);
 
-/// A sandbox user held for one grading (see the design note): released, and its processes ended,
-/// when destroyed.
+/// A sandbox user held for one grading (see the design note): released when destroyed (and its
+/// processes ended by uid where there are no pid namespaces).
 class UidClaim {
  public:
   UidClaim() = default;
@@ -90,10 +110,9 @@ class UidClaim {
 };
 
 /// Claims a sandbox user for one grading: `wanted` when given (waits up to a minute while
-/// another grading holds it), else the first free uid below nobody's (65533, 65532, ...) that
-/// has no account and no other grading's lock. Ends every process of it before returning, and
-/// checks that a process can run as it. Not held (with `error`) when not root or when no uid
-/// works.
+/// another grading holds it), else a uid drawn at random (see the design note) that has no
+/// account, no process and no other grading's lock. Checks that a process can run as it. Not
+/// held (with `error`) when not root or when no uid works.
 UidClaim claimUid(std::optional<uid_t> wanted, std::string& error);
 
 }  // namespace a6::grader::process

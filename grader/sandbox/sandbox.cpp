@@ -112,6 +112,8 @@ enum Stage : std::int32_t {
   kSeccomp,
   kExec,
   kWorkTmpfs,
+  kProc,
+  kFork,
 };
 
 struct Record {
@@ -164,7 +166,9 @@ struct Plan {
   bool dropPrivileges = false;
   uid_t uid = 65534;
   gid_t gid = 65534;
-  pid_t parent = 0;
+  pid_t parent = 0;           // the program's parent as the program sees it (getppid())
+  bool pidNamespace = false;  // the child is the init of its own pid namespace (the keeper)
+  int endFd = -1;             // the keeper writes the program's wait status here
   std::vector<MountOp> ops;
   std::string workTmpfs;               // tmpfs options for the work dir ("": none)
   std::vector<std::string> hidePaths;  // for messages, by op index
@@ -226,13 +230,15 @@ class Child {
     if (setsid() < 0) die(kSetsid);
   }
 
-  // The grader's files out of sight (as root, when there is anything to hide or a work tmpfs).
+  // The grader's files out of sight (as root, when there is anything to hide, a work tmpfs or a
+  // pid namespace whose /proc to mount).
   void hideTheMachine() {
-    if (!p_.root || (p_.ops.empty() && p_.workTmpfs.empty())) return;
+    if (!p_.root || (p_.ops.empty() && p_.workTmpfs.empty() && !p_.pidNamespace)) return;
     if (unshare(CLONE_NEWNS) != 0) return report(false, kUnshareMounts, errno, -1);
     if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) {
       return report(false, kMountPrivate, errno, -1);
     }
+    mountNamespace_ = true;
     openBeforeCovering();
     for (std::size_t k = 0; k < p_.ops.size(); ++k) {
       if (p_.ops[k].kind == MountOp::Reveal) {
@@ -242,6 +248,15 @@ class Child {
       }
     }
     boundTheWorkDir();
+  }
+
+  // In its own pid namespace (the keeper), a /proc of that namespace: the code sees its own
+  // processes only, not the machine's (needs the private mount namespace).
+  void mountOwnProc() {
+    if (!p_.pidNamespace || !mountNamespace_) return;
+    if (mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr) != 0) {
+      report(false, kProc, errno, -1);
+    }
   }
 
   // No network (as root).
@@ -295,10 +310,47 @@ class Child {
     if (syscall(SYS_setuid, p_.uid) != 0) die(kSetuid);
   }
 
-  // Dies with the grader (set after the uid change, which clears it).
+  // Dies with its parent (set after the uid change, which clears it): the grader, or in a pid
+  // namespace the keeper, which dies with the grader.
   void dieWithTheGrader() {
     if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) die(kDeathSignal);
     if (getppid() != p_.parent) _exit(127);
+  }
+
+  // The keeper, init of the pid namespace, dies with the grader. Its parent lies outside the
+  // namespace (getppid() is 0), so a grader that died before the signal was set is seen by the
+  // status pipe having no reader any more.
+  void keeperDiesWithTheGrader() {
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) die(kDeathSignal);
+    pollfd pfd{statusFd_, 0, 0};
+    if (poll(&pfd, 1, 0) > 0 && (pfd.revents & (POLLERR | POLLHUP)) != 0) _exit(127);
+  }
+
+  // The program's process, from the keeper: a plain fork (raw, as glibc's fork would take the
+  // locks of the grader's other threads, which this copy of them may hold forever).
+  pid_t forkProgram() {
+    const long pid = syscall(SYS_clone, SIGCHLD, 0, 0, 0, 0);
+    if (pid < 0) die(kFork);
+    return static_cast<pid_t>(pid);
+  }
+
+  // The keeper, once the program runs: holds no descriptor of the grader's but its end pipe,
+  // reaps whatever the namespace leaves to it, and when the program ends writes its wait status
+  // and exits, which ends every process left in the namespace.
+  [[noreturn]] void keep(pid_t program) {
+    const int endFd = p_.endFd;
+    closeRange(0, endFd - 1, p_.maxFd);
+    closeRange(endFd + 1, 0x7fffffff, p_.maxFd);
+    for (;;) {
+      int status = 0;
+      const pid_t got = waitpid(-1, &status, __WALL);
+      if (got == program) {
+        ssize_t ignored = ::write(endFd, &status, sizeof status);
+        (void)ignored;
+        _exit(0);
+      }
+      if (got < 0 && errno != EINTR) _exit(126);
+    }
   }
 
   void noNewPrivileges() {
@@ -408,14 +460,12 @@ class Child {
 
   Plan& p_;
   int statusFd_;
+  bool mountNamespace_ = false;
   char nullSource_[32] = "/dev/null";
 };
 
-[[noreturn]] void childMain(Plan& plan) {
-  Child child(plan);
-  child.newSession();
-  child.hideTheMachine();
-  child.isolateNetwork();
+// The program's own set-up, then the program.
+[[noreturn]] void programMain(Child& child) {
   child.placeFds();
   child.enterWorkDir();
   child.applyLimits(false);
@@ -425,6 +475,24 @@ class Child {
   child.noNewPrivileges();
   child.installFilter();
   child.exec();
+}
+
+// The child of the grader. In its own pid namespace (as root) it is that namespace's init, the
+// keeper, and the program runs as its child: every process the program starts, in a new session
+// or not, lives in the namespace and ends with the keeper, and no signal from the code reaches a
+// process outside it. Without one, the child is the program itself.
+[[noreturn]] void childMain(Plan& plan) {
+  Child child(plan);
+  if (plan.pidNamespace) child.keeperDiesWithTheGrader();
+  child.newSession();
+  child.hideTheMachine();
+  child.mountOwnProc();
+  child.isolateNetwork();
+  if (plan.pidNamespace) {
+    const pid_t program = child.forkProgram();
+    if (program > 0) child.keep(program);
+  }
+  programMain(child);
 }
 
 // The seccomp program every sandboxed child gets (default: allow) ---------------------------------
@@ -695,7 +763,7 @@ void planProgram(const SandboxSpec& spec, Plan& plan) {
   plan.dropPrivileges = plan.root && spec.uid != 0;
   plan.uid = spec.uid;
   plan.gid = spec.gid;
-  plan.parent = getpid();
+  plan.parent = getpid();  // forkChild sets the keeper instead when it makes a pid namespace
   plan.args = spec.argv;
   plan.envs = spec.env;
   for (std::string& a : plan.args) plan.argv.push_back(a.data());
@@ -791,6 +859,9 @@ std::string describeIsolationStep(const Record& r, const Plan& plan) {
              "): sockets are refused by the seccomp filter only";
     case kWorkTmpfs:
       return "mounting a tmpfs on the work dir " + plan.workDir + ": " + err;
+    case kProc:
+      return "could not mount the pid namespace's own /proc (" + err +
+             "): the code sees the machine's processes in /proc (it still cannot signal them)";
     case kSeccomp:
       return "could not install the seccomp filter (" + err + "): sockets are not refused";
     default:
@@ -839,6 +910,8 @@ std::string describeProcessStep(const Record& r, const Plan& plan, const Sandbox
       return "setting no_new_privs: " + err;
     case kExec:
       return describeExec(r, plan, spec);
+    case kFork:
+      return "starting the program in its pid namespace (fork): " + err;
     default:
       return "unknown setup stage " + std::to_string(r.stage) + ": " + err;
   }
@@ -854,6 +927,7 @@ std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec&
 struct Started {
   pid_t pid = -1;
   int outFd = -1;
+  int endFd = -1;  // in a pid namespace: where the keeper writes the program's wait status
   std::string error;
   std::vector<std::string> notes;
   std::string workDir;
@@ -912,25 +986,50 @@ std::string openPipes(int out[2], int status[2]) {
   return "";
 }
 
+// The child: as root, the init of a pid namespace of its own (clone(CLONE_NEWPID), raw, so the
+// child runs only system calls as after fork); where the kernel refuses one, or not as root, a
+// plain fork, and a note says what that leaves unprotected. Returns fork()'s result.
+pid_t forkChild(Plan& plan, std::vector<std::string>& notes) {
+  if (plan.root) {
+    plan.pidNamespace = true;
+    plan.parent = 1;  // the program's parent: the keeper, init of the namespace
+    const long pid = syscall(SYS_clone, CLONE_NEWPID | SIGCHLD, 0, 0, 0, 0);
+    if (pid == 0) childMain(plan);
+    if (pid > 0) return static_cast<pid_t>(pid);
+    notes.push_back("no pid namespace (clone(CLONE_NEWPID): " + errnoText(errno) +
+                    "): a process the code leaves running is found and ended by its user id");
+    plan.pidNamespace = false;
+    plan.parent = getpid();
+  }
+  const pid_t pid = fork();
+  if (pid == 0) childMain(plan);
+  return pid;
+}
+
 Started start(const SandboxSpec& spec) {
   Started s;
   Plan plan;
   s.error = makePlan(spec, plan);
   s.workDir = plan.workDir;
   s.notes = plan.notes;
-  int out[2], status[2];
+  int out[2], status[2], end[2] = {-1, -1};
   if (!s.error.empty() || !(s.error = openPipes(out, status)).empty()) return s;
+  if (pipe2(end, O_CLOEXEC) != 0) {
+    s.error = "pipe: " + errnoText(errno);
+    for (int fd : {out[0], out[1], status[0], status[1]}) ::close(fd);
+    return s;
+  }
   plan.outFd = out[1];
   plan.statusFd = status[1];
+  plan.endFd = end[1];
 
-  const pid_t pid = fork();
-  if (pid == 0) childMain(plan);
+  const pid_t pid = forkChild(plan, s.notes);
   ::close(out[1]);
   ::close(status[1]);
+  ::close(end[1]);
   if (pid < 0) {
     s.error = "fork: " + errnoText(errno);
-    ::close(out[0]);
-    ::close(status[0]);
+    for (int fd : {out[0], status[0], end[0]}) ::close(fd);
     return s;
   }
   if (!awaitExec(status[0], plan, spec, s)) {
@@ -938,12 +1037,27 @@ Started start(const SandboxSpec& spec) {
     kill(pid, SIGKILL);
     waitpid(pid, nullptr, 0);
     ::close(out[0]);
+    ::close(end[0]);
     return s;
   }
   fcntl(out[0], F_SETFL, fcntl(out[0], F_GETFL) | O_NONBLOCK);
+  fcntl(end[0], F_SETFL, fcntl(end[0], F_GETFL) | O_NONBLOCK);
   s.pid = pid;
   s.outFd = out[0];
+  s.endFd = plan.pidNamespace ? end[0] : -1;
+  if (!plan.pidNamespace) ::close(end[0]);
   return s;
+}
+
+// How the program ended, given the child's wait status: in a pid namespace the keeper wrote the
+// program's own status before it exited; without that (the keeper was killed: a time-out, a
+// stop) the child's. Closes endFd.
+int programStatus(int endFd, int childStatus) {
+  if (endFd < 0) return childStatus;
+  int status = 0;
+  const ssize_t n = ::read(endFd, &status, sizeof status);
+  ::close(endFd);
+  return n == static_cast<ssize_t>(sizeof status) ? status : childStatus;
 }
 
 // Fills kind and code from a wait status.
@@ -1076,6 +1190,7 @@ Exit runSandboxed(const SandboxSpec& spec) {
   }
   if (pidFd >= 0) ::close(pidFd);
   ::close(s.outFd);
+  status = programStatus(s.endFd, status);
   if (timedOut) {
     exit.kind = Exit::Kind::TimedOut;
     exit.code = SIGKILL;
@@ -1095,6 +1210,9 @@ Exit runSandboxed(const SandboxSpec& spec) {
 struct SandboxedProcess::State {
   Sink sink;
   int outFd = -1;
+  int endFd = -1;  // the keeper's report of the program's status (pid namespace), or -1
+  bool pidNamespace = false;
+  pid_t program = -1;  // the program's pid (found once, in a pid namespace)
   std::thread drainer;
   std::atomic<bool> stopping{false};
   Clock::time_point begin;
@@ -1124,6 +1242,8 @@ SandboxedProcess::SandboxedProcess(const SandboxSpec& spec) : state_(new State) 
   }
   pid_ = s.pid;
   state_->outFd = s.outFd;
+  state_->endFd = s.endFd;
+  state_->pidNamespace = s.endFd >= 0;
   State* state = state_;
   // Drains the output until its end, or shortly after stop() (a process that escaped the group
   // could hold the pipe open forever).
@@ -1152,6 +1272,13 @@ bool SandboxedProcess::alive() {
   return !state_->stopped && pid_ > 0 && !hasEnded(pid_);
 }
 
+pid_t SandboxedProcess::programPid() {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  if (!state_->pidNamespace || state_->stopped) return state_->stopped ? -1 : pid_;
+  if (state_->program <= 0) state_->program = process::childInNamespace(pid_, 2).value_or(-1);
+  return state_->program;
+}
+
 std::string SandboxedProcess::output() const { return state_->sink.text(); }
 
 const std::vector<std::string>& SandboxedProcess::notes() const { return state_->notes; }
@@ -1160,7 +1287,8 @@ Exit SandboxedProcess::stop() {
   std::lock_guard<std::mutex> lock(state_->mutex);
   if (state_->stopped) return state_->exit;
   state_->stopped = true;
-  const int status = killAndReap(pid_);
+  const int status = programStatus(state_->endFd, killAndReap(pid_));
+  state_->endFd = -1;
   state_->stopping = true;
   if (state_->drainer.joinable()) state_->drainer.join();
   ::close(state_->outFd);

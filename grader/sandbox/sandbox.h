@@ -4,8 +4,16 @@
 //
 // Design note: what the child gets, in order (grader/sandbox/sandbox.cpp prepares everything before
 // fork(), so the child between fork and exec only makes system calls):
+//   0. as root, a pid namespace of its own: the child is its init (the keeper), and the program
+//      runs as the keeper's child. Whatever the program starts (a new session, a daemon, any
+//      name) stays in the namespace and is ended by the kernel when the keeper ends, and no
+//      signal from inside reaches a process outside: a grading ends only what it started, with
+//      no search of the machine's processes by user id. The keeper hands the program's wait
+//      status to the parent on a pipe. Where the kernel refuses (a container without
+//      CAP_SYS_ADMIN), a plain fork, and Exit::notes says so;
 //   1. its own session and process group (the parent kills the whole group with SIGKILL);
-//   2. as root: a private mount namespace where every `hide` path is covered (a directory by an
+//   2. as root: a private mount namespace, with the pid namespace's own /proc, where every
+//      `hide` path is covered (a directory by an
 //      empty tmpfs, a file by /dev/null), with the `reveal` paths, the work dir and argv[0]
 //      bound back in place (allowOnly() makes `hide` an allow-list of the machine); a folder
 //      above a revealed path that `uid` cannot search (a checkout in /root, mode 0700) is
@@ -97,7 +105,11 @@ class SandboxedProcess {
   SandboxedProcess& operator=(const SandboxedProcess&) = delete;
 
   const std::string& error() const { return error_; }
+  /// The child the grader started and kills: the program itself, or in a pid namespace its
+  /// keeper (the namespace's init, which ends every process in it when it ends).
   pid_t pid() const { return pid_; }
+  /// The program's own pid, to inspect it in /proc (-1 when gone or not found).
+  pid_t programPid();
   /// False once it has exited (it stays unreaped, so its pid and group are not reused, until
   /// stop()).
   bool alive();

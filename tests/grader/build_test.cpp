@@ -15,7 +15,6 @@
 #include <iostream>
 #include <string>
 
-#include "build/object_cache.h"
 #include "intake/intake.h"
 #include "sandbox_user.h"
 
@@ -95,12 +94,11 @@ class BuildProbe : public ::testing::Test {
     fs::remove_all(root_, ec);
   }
   Build build(const Limits& limits = defaultCompileLimits()) { return buildIn("work", limits); }
-  // A build in root_/`work`, with `cache` when it is given.
-  Build buildIn(const std::string& work, const Limits& limits = defaultCompileLimits(),
-                const ObjectCache* cache = nullptr) {
+  // A build in root_/`work`.
+  Build buildIn(const std::string& work, const Limits& limits = defaultCompileLimits()) {
     const Intake in = takeSubmission(submission_, root_ / work / "src");
     EXPECT_TRUE(in.ok()) << in.error;
-    Build b = buildProbe(*kit_, in, root_ / work / "build", limits, 2, kDefaultBuildBudget, cache);
+    Build b = buildProbe(*kit_, in, root_ / work / "build", limits, 2, kDefaultBuildBudget);
     if (std::getenv("A6_TEST_VERBOSE") != nullptr) std::cout << describe(b);
     return b;
   }
@@ -455,188 +453,28 @@ TEST_F(BuildProbe, RunawayCompilesFailWithinTheLimits) {
   }
 }
 
-// ---- the object cache (build/object_cache.h)
-// -----------------------------------------------------
-
-class ObjectCacheEntry : public ::testing::Test {
- protected:
-  void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "a6-cache-XXXXXX").string();
-    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-    root_ = tmpl;
-    writeFile(root_ / "a.o", "the object of text A");
-    writeFile(root_ / "b.o", "the object of text B");
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(root_, ec);
-  }
-  // The cache's entry folders.
-  static std::vector<fs::path> entries(const ObjectCache& cache) {
-    std::vector<fs::path> found;
-    for (const auto& e : fs::directory_iterator(cache.dir())) found.push_back(e.path());
-    return found;
-  }
-  // The one entry whose source is `text`.
-  static fs::path entryOf(const ObjectCache& cache, const std::string& text) {
-    for (const fs::path& e : entries(cache)) {
-      if (readAll(e / "source") == text) return e;
-    }
-    return {};
-  }
-  fs::path root_;
-};
-
-TEST_F(ObjectCacheEntry, ServesOnlyItsExactTextFileAndKit) {
-  const ObjectCache cache(root_ / "cache", "kit A\n");
-  ASSERT_TRUE(cache.on()) << cache.error();
-  EXPECT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", "spring.cpp:1: warning: A"), "");
-  const std::optional<CachedCompile> hit = cache.find("spring.cpp", "text A");
-  ASSERT_TRUE(hit.has_value());
-  EXPECT_EQ(hit->object, "the object of text A");
-  EXPECT_EQ(hit->messages, "spring.cpp:1: warning: A");
-  EXPECT_FALSE(cache.find("spring.cpp", "text A ").has_value()) << "another text";
-  EXPECT_FALSE(cache.find("forces.cpp", "text A").has_value()) << "another task file";
-  EXPECT_FALSE(ObjectCache(root_ / "cache", "kit B\n").find("spring.cpp", "text A").has_value())
-      << "another kit";
-  struct stat st;
-  ASSERT_EQ(::stat(cache.dir().c_str(), &st), 0);
-  EXPECT_EQ(st.st_mode & 077, 0u) << "other submissions' objects are the grader's alone";
-}
-
-// An entry in the folder another text's entry would take (a hash collision, made on purpose or
-// not): its stored text is not the one asked for, so it serves neither text; keeping the other
-// text replaces it.
-TEST_F(ObjectCacheEntry, AFolderNameIsAHintOnly) {
-  const ObjectCache cache(root_ / "cache", "kit\n");
-  ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
-  ASSERT_EQ(cache.keep("spring.cpp", "text B", root_ / "b.o", ""), "");
-  const fs::path a = entryOf(cache, "text A"), b = entryOf(cache, "text B");
-  ASSERT_FALSE(a.empty() || b.empty());
-  fs::remove_all(b);
-  fs::rename(a, b);  // A's entry where B's belongs
-  EXPECT_FALSE(cache.find("spring.cpp", "text B").has_value()) << "B was served A's object";
-  EXPECT_FALSE(cache.find("spring.cpp", "text A").has_value());
-  ASSERT_EQ(cache.keep("spring.cpp", "text B", root_ / "b.o", ""), "");
-  EXPECT_EQ(cache.find("spring.cpp", "text B")->object, "the object of text B");
-  EXPECT_EQ(entries(cache).size(), 1u) << "the entry it replaced is gone";
-}
-
-// An object cut short (a power cut before it reached the disk) or changed since it was kept is
-// never served; keeping its text again replaces it.
-TEST_F(ObjectCacheEntry, ABrokenEntryIsAMissAndIsReplaced) {
-  const ObjectCache cache(root_ / "cache", "kit\n");
-  ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
-  const fs::path entry = entryOf(cache, "text A");
-  ASSERT_FALSE(entry.empty());
-  fs::resize_file(entry / "object.o", 5);
-  EXPECT_FALSE(cache.find("spring.cpp", "text A").has_value()) << "a cut object";
-  ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
-  EXPECT_EQ(cache.find("spring.cpp", "text A")->object, "the object of text A");
-  writeFile(entryOf(cache, "text A") / "object.o", "the object of text X");  // same size
-  EXPECT_FALSE(cache.find("spring.cpp", "text A").has_value()) << "a changed object";
-}
-
-TEST_F(ObjectCacheEntry, LinksAndOpenFoldersAreNeverUsed) {
-  const ObjectCache cache(root_ / "cache", "kit\n");
-  ASSERT_EQ(cache.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
-  const fs::path object = entryOf(cache, "text A") / "object.o";
-  fs::remove(object);
-  fs::create_symlink(root_ / "a.o", object);
-  EXPECT_FALSE(cache.find("spring.cpp", "text A").has_value()) << "an object that is a link";
-  fs::create_symlink(root_ / "b.o", root_ / "link.o");
-  EXPECT_NE(cache.keep("forces.cpp", "text", root_ / "link.o", ""), "");
-  EXPECT_FALSE(cache.find("forces.cpp", "text").has_value()) << "kept through a link";
-  fs::create_directories(root_ / "open");
-  fs::permissions(root_ / "open",
-                  fs::perms::owner_all | fs::perms::others_read | fs::perms::others_exec);
-  const ObjectCache open(root_ / "open", "kit\n");
-  EXPECT_FALSE(open.on());
-  EXPECT_NE(open.error().find("0700"), std::string::npos) << open.error();
-  EXPECT_NE(open.keep("spring.cpp", "text A", root_ / "a.o", ""), "");
-}
-
-// What decides a compile's output is in the fingerprint: a staged header's text, a flag, a
-// header under an -isystem folder outside /usr/include.
-TEST_F(ObjectCacheEntry, TheKitFingerprintChangesWithWhatACompileReads) {
-  Kit kit;
-  kit.compiler = "/usr/bin/c++";
-  kit.dir = root_ / "kit";
-  writeFile(kit.dir / "include" / "a6" / "spring.h", "struct Spring {};\n");
-  writeFile(root_ / "eigen" / "Core", "// Eigen\n");
-  kit.compileFlags = {"-O2", "-isystem", (root_ / "eigen").string()};
-  const std::string base = kitFingerprint(kit);
-  EXPECT_EQ(kitFingerprint(kit), base) << "the same kit, the same fingerprint";
-  writeFile(kit.dir / "include" / "a6" / "spring.h", "struct Spring { int k; };\n");
-  const std::string header = kitFingerprint(kit);
-  EXPECT_NE(header, base) << "a staged header changed";
-  kit.compileFlags[0] = "-O1";
-  const std::string flag = kitFingerprint(kit);
-  EXPECT_NE(flag, header) << "a flag changed";
-  const auto later = fs::last_write_time(root_ / "eigen" / "Core") + std::chrono::seconds(5);
-  writeFile(root_ / "eigen" / "Core", "// Eigen, upgraded\n");
-  fs::last_write_time(root_ / "eigen" / "Core", later);
-  EXPECT_NE(kitFingerprint(kit), flag) << "a system header changed";
-}
-
-TEST_F(BuildProbe, TheObjectCacheServesATextCompiledBeforeWithoutCompilingIt) {
-  const ObjectCache cache(root_ / "cache", kitFingerprint(*kit_));
-  ASSERT_TRUE(cache.on()) << cache.error();
-  // A warning, so that the compiler's messages are served too, and __FILE__.
-  writeFile(submission_ / "cloth.cpp", readAll(kRepo / "solution" / "cloth.cpp") +
-                                           "\nint a6UnusedWarning() { int unused = 1; return 0; }\n"
-                                           "const char* a6WhereAmI() { return __FILE__; }\n");
-  const Build first = buildIn("first", defaultCompileLimits(), &cache);
-  expectLinkedWithOthersCompiled(first, "");
-  const Build second = buildIn("second", defaultCompileLimits(), &cache);
-  expectLinkedWithOthersCompiled(second, "");
-  for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {
-    EXPECT_FALSE(first.tasks[i].reused) << first.tasks[i].file;
-    EXPECT_TRUE(second.tasks[i].reused) << second.tasks[i].file;
-    EXPECT_EQ(second.tasks[i].messages, first.tasks[i].messages) << second.tasks[i].file;
-    EXPECT_EQ(readAll(second.tasks[i].object), readAll(first.tasks[i].object));
-    EXPECT_EQ(second.tasks[i].object.string().rfind((root_ / "second").string(), 0), 0u)
-        << "the linker reads the object in the work folder: " << second.tasks[i].object;
-  }
-  EXPECT_NE(task(second, "cloth.cpp").messages.find("unused"), std::string::npos)
-      << describe(second);
-  // The object names no folder of the first grading: __FILE__ is the file's name alone.
-  EXPECT_EQ(readAll(task(first, "cloth.cpp").object).find((root_ / "first").string()),
-            std::string::npos);
-  // One file changed: it alone is compiled again.
+// Nothing compiled from a submission is shared with another grading: a file equal byte for
+// byte to the solution's gets the kit's known object (compiled by the grader's own build), any
+// other text is compiled in its own grading, every time.
+TEST_F(BuildProbe, OnlyTheKitsOwnTextsAreNotCompiled) {
+  if (kit_->knownObjects.empty()) GTEST_SKIP() << "no solution in this build: no known objects";
+  const Build solution = buildIn("solution");
+  expectLinkedWithOthersCompiled(solution, "");
+  for (const TaskBuild& t : solution.tasks) EXPECT_TRUE(t.known) << t.file;
   writeFile(submission_ / "forces.cpp",
             readAll(kRepo / "solution" / "forces.cpp") + "\n// changed\n");
-  const Build third = buildIn("third", defaultCompileLimits(), &cache);
-  expectLinkedWithOthersCompiled(third, "");
-  for (const TaskBuild& t : third.tasks) EXPECT_EQ(t.reused, t.file != "forces.cpp") << t.file;
+  for (const std::string work : {"first", "second"}) {
+    const Build b = buildIn(work);
+    expectLinkedWithOthersCompiled(b, "");
+    for (const TaskBuild& t : b.tasks) EXPECT_EQ(t.known, t.file != "forces.cpp") << t.file;
+    EXPECT_EQ(task(b, "forces.cpp").object.string().rfind((root_ / work).string(), 0), 0u)
+        << "compiled in this grading's own folder";
+  }
 }
 
-// A cached object is checked as a fresh one is: one holding code that would run before the
-// probe's filter (here an entry kept for the solution's text, forged with the hostile object)
-// is not used; the file is compiled.
-TEST_F(BuildProbe, ACachedObjectThatWouldRunBeforeTheFilterIsCompiledAgain) {
-  const ObjectCache cache(root_ / "cache", kitFingerprint(*kit_));
-  submitOnly("spring.cpp", readAll(kRepo / "tests/grader/submissions/preinit_entry/spring.cpp"));
-  const Build hostile = buildIn("hostile", defaultCompileLimits(), &cache);
-  ASSERT_EQ(task(hostile, "spring.cpp").status, Status::LinkError) << describe(hostile);
-  const fs::path object = root_ / "hostile" / "build" / "obj" / "spring" / "spring.o";
-  const std::string solution = readAll(kRepo / "solution" / "spring.cpp");
-  ASSERT_EQ(cache.keep("spring.cpp", solution, object, ""), "");
-  submitOnly("spring.cpp", solution);
-  const Build b = buildIn("work", defaultCompileLimits(), &cache);
-  EXPECT_EQ(task(b, "spring.cpp").status, Status::Compiled) << describe(b);
-  EXPECT_FALSE(task(b, "spring.cpp").reused);
-}
-
-// What makes an entry depend on its file's text alone: a compile sees no other task file. Nor
-// does it see the cache.
-TEST_F(BuildProbe, ACompileSeesNoOtherTaskFileNorTheObjectCache) {
+// A compile sees no other task file, nor the kit's known objects (the solution's texts).
+TEST_F(BuildProbe, ACompileSeesNoOtherTaskFileNorTheKnownObjects) {
   if (::geteuid() != 0) GTEST_SKIP() << "hiding paths needs root (mount namespaces)";
-  const ObjectCache cache(root_ / "cache", kitFingerprint(*kit_));
-  writeFile(root_ / "a.o", "not an object");
-  ASSERT_EQ(cache.keep("joints.cpp", "int stolen = 42;\n", root_ / "a.o", ""), "");
-  fs::path entry;
-  for (const auto& e : fs::directory_iterator(cache.dir())) entry = e.path();
   submitOnly("spring.cpp",
              "#define A6_SIBLING_SEEN 1\n" + readAll(kRepo / "solution" / "spring.cpp"));
   // A hidden file reads as empty: forces.cpp compiles, without spring.cpp's text.
@@ -644,8 +482,10 @@ TEST_F(BuildProbe, ACompileSeesNoOtherTaskFileNorTheObjectCache) {
             "#include \"spring.cpp\"\n#ifdef A6_SIBLING_SEEN\n#error the compile saw spring.cpp\n"
             "#endif\n" +
                 readAll(kRepo / "solution" / "forces.cpp"));
-  writeFile(submission_ / "cloth.cpp", "#include \"" + (entry / "source").string() + "\"\n");
-  const Build b = buildIn("work", defaultCompileLimits(), &cache);
+  const fs::path known =
+      kit_->knownObjects.empty() ? kit_->dir.parent_path() / "known" : kit_->knownObjects;
+  writeFile(submission_ / "cloth.cpp", "#include \"" + (known / "cloth.cpp").string() + "\"\n");
+  const Build b = buildIn("work");
   ASSERT_TRUE(b.ok()) << describe(b);
   EXPECT_EQ(task(b, "spring.cpp").status, Status::Compiled) << describe(b);
   EXPECT_EQ(task(b, "forces.cpp").status, Status::Compiled) << describe(b);

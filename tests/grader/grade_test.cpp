@@ -65,21 +65,6 @@ TEST(GradeCommand, ABadCommandLineExitsWith2) {
   EXPECT_NE(help.output.find("--rubric"), std::string::npos) << help.output;
 }
 
-// The cache holds other submissions' objects: never where the sandbox sees (the work folder is
-// in --out) nor where it would hide the submission or the results.
-TEST(GradeCommand, AnObjectCacheOverlappingTheOutputOrTheSubmissionExitsWith2) {
-  const fs::path out = outDir("cache_overlap");
-  for (const std::string& cache : {(out / "cache").string(), out.parent_path().string(),
-                                   std::string(A6_SOURCE_DIR "/solution/cache")}) {
-    const Outcome r = grade(A6_SOURCE_DIR "/solution", out, "--object-cache '" + cache + "'");
-    EXPECT_EQ(r.status, 2) << cache << "\n" << r.output;
-    EXPECT_NE(r.output.find("overlap"), std::string::npos) << r.output;
-  }
-  EXPECT_FALSE(fs::exists(out / "cache"));
-  EXPECT_FALSE(fs::exists(A6_SOURCE_DIR "/solution/cache"));
-  EXPECT_FALSE(fs::exists(out / "work")) << "nothing was built";
-}
-
 TEST(GradeCommand, ABadRubricStopsBeforeAnyBuildWithExit2AndTheLine) {
   const fs::path out = outDir("bad_rubric");
   fs::create_directories(out);

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <thread>
 
 #include "poisoner.h"
@@ -87,6 +88,13 @@ TEST(ProcessUsers, TwoClaimsNeverShareAUid) {
   ASSERT_TRUE(b.held()) << e2;
   EXPECT_NE(a.uid(), b.uid());
   EXPECT_NE(a.uid(), 65534u) << "never nobody: other programs run as nobody";
+  std::ifstream map("/proc/self/uid_map");
+  unsigned long inside = 1, outside = 0, count = 0;
+  map >> inside >> outside >> count;
+  if (inside == 0 && count == 4294967295ul) {
+    EXPECT_GE(a.uid(), 1000000u) << "drawn far above every account";
+    EXPECT_GE(b.uid(), 1000000u);
+  }
 }
 
 TEST(ProcessUsers, EveryProcessOfAUserEndsWhateverItIsNamed) {
@@ -105,25 +113,31 @@ TEST(ProcessUsers, EveryProcessOfAUserEndsWhateverItIsNamed) {
   process::waitFor(poisoner, 5);
 }
 
-TEST(ProcessUsers, AClaimEndsWhatAnEarlierGradingLeftBehind) {
-  if (geteuid() != 0) GTEST_SKIP() << "only root changes the sandbox's user";
-  std::string error;
-  uid_t uid = 0;
-  {
-    process::UidClaim first = process::claimUid(std::nullopt, error);
-    ASSERT_TRUE(first.held()) << error;
-    uid = first.uid();
-  }
-  // Left running after the claim was released (an a6_grade killed with SIGKILL).
+// A grading ends only what it started: a uid some process runs as (another grading's, or what
+// one left behind) is never drawn, and asked for by name it is refused, its processes untouched.
+TEST(ProcessUsers, AUidInUseIsNeverClaimedAndItsProcessesAreLeftAlone) {
+  if (!process::pidNamespaces()) GTEST_SKIP() << "needs root and pid namespaces";
+  const uid_t uid = 62000 + static_cast<uid_t>(getpid() % 1000);
   const pid_t poisoner = a6::test::startPoisoner(uid);
   for (int k = 0; k < 200 && aliveOf(uid) < 1; ++k) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  ASSERT_GE(aliveOf(uid), 1);
-  const process::UidClaim again = process::claimUid(uid, error);
-  ASSERT_TRUE(again.held()) << error;
-  EXPECT_EQ(aliveOf(uid), 0) << "a claimed user starts with no process";
+  ASSERT_GE(aliveOf(uid), 1) << "the poisoner did not start";
+  std::string error;
+  const process::UidClaim named = process::claimUid(uid, error);
+  EXPECT_FALSE(named.held());
+  EXPECT_NE(error.find("in use"), std::string::npos) << error;
+  EXPECT_GE(aliveOf(uid), 1) << "the claim ended processes it did not start";
+  for (int k = 0; k < 20; ++k) {
+    const process::UidClaim drawn = process::claimUid(std::nullopt, error);
+    ASSERT_TRUE(drawn.held()) << error;
+    EXPECT_NE(drawn.uid(), uid);
+    EXPECT_EQ(aliveOf(drawn.uid()), 0) << "a drawn uid has no process";
+  }
+  EXPECT_GE(aliveOf(uid), 1);
+  kill(poisoner, SIGKILL);
   process::waitFor(poisoner, 5);
+  process::endProcessesOf(uid);  // the poisoner's child, in a session of its own
 }
 
 }  // namespace

@@ -6,11 +6,10 @@
 # prefix (so the switch did reword them). The grader's seed and a rubric with 2-s time limits
 # are the same for both.
 #
-#   tests/grader/reword_test.sh SOURCE_DIR A6_GRADE OUT_DIR [OBJECT_CACHE]
-# Exit code: 0 when nothing changed, 1 otherwise (each difference named). With OBJECT_CACHE (the
-# suite's), a file compiled before is not compiled again (a6_grade --object-cache).
+#   tests/grader/reword_test.sh SOURCE_DIR A6_GRADE OUT_DIR
+# Exit code: 0 when nothing changed, 1 otherwise (each difference named).
 set -uo pipefail
-root="$1" grade="$2" out="$3" cache="${4:-$3/object-cache}"
+root="$1" grade="$2" out="$3"
 rm -rf "$out" && mkdir -p "$out" && chmod 755 "$out"
 # The grader's rubric with every time limit cut to 2 s (the correct checks take a few hundredths
 # each), so that the endless loops cost seconds, not minutes.
@@ -35,7 +34,6 @@ grade_one() {
   mkdir -p "$out/$mode"
   A6_REWORD_MESSAGES=$([ "$mode" = reworded ] && echo 1 || echo 0) \
     "$grade" "$c" --out "$out/$mode/$name" --rubric "$out/rubric.toml" --seed 7 --jobs 1 --quiet \
-    --object-cache "$cache" \
     >"$out/$mode/$name.log" 2>&1
   # The points only: the status of a 0-point item (a sanity check) of a submission that floods
   # or stalls its probe may change with the machine's load, its points cannot.
@@ -44,7 +42,7 @@ grade_one() {
     echo "no results.json" >"$out/$mode/$name.scores"
 }
 export -f grade_one
-export out grade cache
+export out grade
 start=$(date +%s)
 for c in "${cases[@]}"; do printf '%s\0%s\0' "$c" plain "$c" reworded; done |
   xargs -0 -n 2 -P 2 bash -c 'grade_one "$0" "$1"'

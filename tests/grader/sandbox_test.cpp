@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "sandbox/process.h"
+
 namespace a6::grader {
 namespace {
 
@@ -170,6 +172,51 @@ TEST(Sandbox, AForkBombIsContainedAndNothingOutlivesTheRun) {
   spec.limits.processes = 0;
   const Exit none = runSandboxed(spec);
   EXPECT_EQ(none.output, "forked 0\n") << "processes = 0: fork is refused outright";
+}
+
+// A grading ends only what it started (grader/sandbox/process.h): what the code leaves running,
+// in a session of its own, ends with the run.
+TEST(Sandbox, WhatItLeavesRunningInASessionOfItsOwnEndsWithIt) {
+  TempDir tmp;
+  const std::string marker = "a6-escape-" + std::to_string(getpid());
+  SandboxSpec spec = toolSpec(tmp, {"escape", marker});
+  spec.limits.processes = 2;
+  const Exit e = runSandboxed(spec);
+  EXPECT_EQ(e.output, "escaped\n") << e.describe();
+  if (!process::pidNamespaces()) GTEST_SKIP() << "no pid namespace here: ended by uid instead";
+  for (const auto t0 = Clock::now(); processesWith(marker) > 0 && since(t0) < 2;) usleep(10000);
+  EXPECT_EQ(processesWith(marker), 0) << "the escaped child outlived its sandbox";
+}
+
+// ... and nothing it does reaches a process it did not start, even one of its own user (another
+// grading's, on a machine where two graders drew the same uid).
+TEST(Sandbox, ItCannotSignalAProcessOutsideItEvenOfItsOwnUser) {
+  if (!process::pidNamespaces()) GTEST_SKIP() << "needs root and pid namespaces";
+  TempDir tmp;
+  const uid_t uid = 61000 + static_cast<uid_t>(getpid() % 1000);
+  const pid_t outside = fork();
+  if (outside == 0) {
+    if (setgid(65534) != 0 || setuid(uid) != 0) _exit(126);
+    for (;;) pause();
+  }
+  ASSERT_GT(outside, 0);
+  usleep(100000);
+  SandboxSpec spec = toolSpec(tmp, {"killall"});
+  spec.uid = uid;
+  spec.gid = 65534;
+  const Exit e = runSandboxed(spec);
+  EXPECT_EQ(e.output, "sent\n") << e.describe();
+  EXPECT_EQ(waitpid(outside, nullptr, WNOHANG), 0) << "the process outside was killed";
+  kill(outside, SIGKILL);
+  waitpid(outside, nullptr, 0);
+}
+
+// Under its keeper, the program dies of its own signals as it would alone.
+TEST(Sandbox, AnAbortIsReportedAsSigabrt) {
+  TempDir tmp;
+  const Exit e = runSandboxed(toolSpec(tmp, {"abort"}));
+  EXPECT_EQ(e.kind, Exit::Kind::Signaled) << e.describe();
+  EXPECT_EQ(e.code, SIGABRT) << e.describe();
 }
 
 TEST(Sandbox, AHugeAllocationFails) {

@@ -54,9 +54,8 @@ struct Graded {
 
 Graded grade(const fs::path& submission, const fs::path& out, const std::string& extra = "") {
   Graded g;
-  const std::string command =
-      std::string(A6_GRADE_COMMAND) + " '" + submission.string() + "' --out '" + out.string() +
-      "' --object-cache '" A6_TEST_OBJECT_CACHE "' --quiet " + extra + " 2>&1";
+  const std::string command = std::string(A6_GRADE_COMMAND) + " '" + submission.string() +
+                              "' --out '" + out.string() + "' --quiet " + extra + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return g;
   char buffer[4096];
