@@ -69,29 +69,6 @@ foreach(file IN LISTS A6_TASK_FILES)
   list(APPEND kit_files ${object} ${A6_KIT_DIR}/starter/${file}.syms)
 endforeach()
 
-# Known texts: the solution's files and their objects, beside the kit (never in it: the kit
-# folder is in every compile's view, this one is hidden with the build tree). A submitted file
-# equal to one byte for byte is linked with its object instead of being compiled (Kit::
-# knownObjects): the grader's own texts are all that is shared between gradings.
-set(A6_KNOWN_DIR "")
-if(A6_HAVE_SOLUTION)
-  set(A6_KNOWN_DIR ${CMAKE_CURRENT_BINARY_DIR}/known)
-  foreach(file IN LISTS A6_TASK_FILES)
-    add_custom_command(
-      OUTPUT ${A6_KNOWN_DIR}/${file}.o ${A6_KNOWN_DIR}/${file}.cpp
-      COMMAND ${CMAKE_COMMAND} -E make_directory ${A6_KNOWN_DIR}
-      COMMAND ${CMAKE_COMMAND} -E copy $<TARGET_OBJECTS:a6_solution_${file}>
-              ${A6_KNOWN_DIR}/${file}.o
-      COMMAND ${CMAKE_COMMAND} -E copy ${PROJECT_SOURCE_DIR}/solution/${file}.cpp
-              ${A6_KNOWN_DIR}/${file}.cpp
-      DEPENDS a6_solution_${file} $<TARGET_OBJECTS:a6_solution_${file}>
-              ${PROJECT_SOURCE_DIR}/solution/${file}.cpp
-      COMMENT "Copying the solution's ${file}.o to the grader's known objects"
-      VERBATIM)
-    list(APPEND kit_files ${A6_KNOWN_DIR}/${file}.o ${A6_KNOWN_DIR}/${file}.cpp)
-  endforeach()
-endif()
-
 # The flags every task file is compiled with: those of the project's own build (C++17, -O2,
 # no FMA contraction, NDEBUG as in the default RelWithDebInfo build), warnings on so that
 # students see them, plain diagnostics, and only the staged headers plus Eigen's.
@@ -131,6 +108,30 @@ add_custom_command(
   VERBATIM)
 list(APPEND kit_files ${A6_KIT_PCH}.gch)
 list(APPEND A6_KIT_COMPILE_FLAGS -include ${A6_KIT_PCH})
+
+# Known texts: the solution's files and their objects, beside the kit (never in it: the kit
+# folder is in every compile's view, this one is hidden with the build tree), each compiled
+# exactly as the grader compiles a submitted file (the kit's compiler and flags, the file's folder
+# mapped away). A submitted file equal to one byte for byte is linked with its object instead of
+# being compiled (Kit::knownObjects): the grader's own texts are all that gradings share.
+set(A6_KNOWN_DIR "")
+if(A6_HAVE_SOLUTION)
+  set(A6_KNOWN_DIR ${CMAKE_CURRENT_BINARY_DIR}/known)
+  foreach(file IN LISTS A6_TASK_FILES)
+    set(source ${PROJECT_SOURCE_DIR}/solution/${file}.cpp)
+    add_custom_command(
+      OUTPUT ${A6_KNOWN_DIR}/${file}.o ${A6_KNOWN_DIR}/${file}.cpp
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${A6_KNOWN_DIR}
+      COMMAND ${CMAKE_CXX_COMPILER} ${A6_KIT_COMPILE_FLAGS}
+              -ffile-prefix-map=${PROJECT_SOURCE_DIR}/solution/= -c ${source}
+              -o ${A6_KNOWN_DIR}/${file}.o
+      COMMAND ${CMAKE_COMMAND} -E copy ${source} ${A6_KNOWN_DIR}/${file}.cpp
+      DEPENDS ${source} ${A6_KIT_PCH}.gch ${staged_headers}
+      COMMENT "Compiling the solution's ${file}.cpp as the grader would, for its known objects"
+      VERBATIM)
+    list(APPEND kit_files ${A6_KNOWN_DIR}/${file}.o ${A6_KNOWN_DIR}/${file}.cpp)
+  endforeach()
+endif()
 
 # What the probe links besides the student's six objects (probe/probe.cmake's link line).
 set(A6_KIT_PROBE_MAIN ${A6_PROBE_LINK_MAIN})

@@ -20,7 +20,6 @@
 
 #include <elf.h>
 #include <fcntl.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -181,12 +180,12 @@ std::optional<std::string> readRegularFile(const fs::path& file) {
   return bytes;
 }
 
-// A tool (the compiler, the linker) that the machine, not the code, may have ended: killed by
-// SIGKILL (which the grader sends only at the time limit, and the kernel when memory runs out),
-// stopped at its time limit, or never started (no process or pipe to be had).
-bool endedByTheMachine(const Exit& e) {
+// A tool (the compiler, the linker) that the machine, not the code, may have ended: killed by a
+// SIGKILL neither the grader nor its CPU limit sent, stopped at its wall-clock limit (a busy
+// machine), or never started (no process or pipe to be had).
+bool endedByTheMachine(const Exit& e, const Limits& limits = defaultCompileLimits()) {
   return e.kind == Exit::Kind::TimedOut || e.kind == Exit::Kind::FailedToStart ||
-         (e.kind == Exit::Kind::Signaled && e.code == SIGKILL);
+         killedByTheMachine(e, limits);
 }
 }  // namespace
 
@@ -584,7 +583,7 @@ class ProbeBuilder {
     // A compile the grader's side ended (killed by a signal it did not send, a tool that could
     // not start, the time limit on a busy machine) is done again, once, while the budget lasts:
     // only a failure that repeats is charged.
-    if (endedByTheMachine(e) && Clock::now() < end_) {
+    if (endedByTheMachine(e, compileLimits_) && Clock::now() < end_) {
       addNote("the compile of " + task.file + " " + e.describe() + ": it was done again");
       e = runCompiler(i, source);
     }

@@ -72,9 +72,9 @@ double BudgetedStudent::budgetLeft() const { return secondsUntil(budgetEnd_); }
 void BudgetedStudent::interpret(harness::Outcome& result) {
   switch (result.fault) {
     case harness::Fault::TimedOut:
-      machineFault_ = true;
+    case harness::Fault::Killed:  // the machine, or the code itself (raise(SIGKILL)): charged
+      machineFault_ = true;       // when it repeats
       break;
-    case harness::Fault::Killed:
     case harness::Fault::StartFailed:
     case harness::Fault::GraderError:
       machineFault_ = graderFault_ = true;

@@ -55,8 +55,8 @@ class BudgetedStudent final : public harness::StudentCode {
   /// time limit or killed by a SIGKILL the grader did not send, a probe that could not start, a
   /// grader error. Such a check is run again (runChecks).
   bool machineMayHaveEndedIt() const { return machineFault_; }
-  /// Whether the running check failed for the grader alone (the probe could not start, was
-  /// killed, the grader erred): run again, a repeat of it is the machine's, not the code's.
+  /// Whether the running check failed for the grader alone (the probe could not start, the
+  /// grader erred): run again, a repeat of it is the machine's, not the code's.
   bool graderFailedIt() const { return graderFault_; }
   /// The time left of the budget of all checks, s.
   double budgetLeft() const;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -95,12 +96,15 @@ int runAll(const Rubric& rubric, std::vector<TestOutcome>& tests, BudgetedStuden
         t.graderFailedIt = student.graderFailedIt();
       },
       progress);
-  ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
-  listeners.Append(&collector);
+  // Appended for this run only, released however it ends (GoogleTest would delete it).
+  struct Listening {
+    ::testing::TestEventListeners& listeners;
+    Collector& collector;
+    ~Listening() { listeners.Release(&collector); }
+  } listening{::testing::UnitTest::GetInstance()->listeners(), collector};
+  listening.listeners.Append(&collector);
   // Its status only repeats what the collector saw.
-  const int status = RUN_ALL_TESTS();
-  listeners.Release(&collector);
-  if (status != 0 && progress) std::fprintf(stderr, "a6_grade: some checks failed\n");
+  if (RUN_ALL_TESTS() != 0 && progress) std::fprintf(stderr, "a6_grade: some checks failed\n");
   return collector.skipped();
 }
 
@@ -114,7 +118,11 @@ void runAgainWhatTheMachineEnded(const Rubric& rubric, const std::string& filter
   int count = 0;
   for (const TestOutcome& t : run.tests) {
     if (t.passed || !t.machineMayHaveEndedIt) continue;
-    again += (again.empty() ? "" : ":") + t.name;
+    // As a filter pattern: '-' would start the negative patterns, ':' the next one.
+    std::string pattern = t.name;
+    std::replace_if(
+        pattern.begin(), pattern.end(), [](char c) { return c == '-' || c == ':'; }, '?');
+    again += (again.empty() ? "" : ":") + pattern;
     ++count;
   }
   if (count == 0 || student.budgetLeft() < 1) return;
@@ -125,6 +133,7 @@ void runAgainWhatTheMachineEnded(const Rubric& rubric, const std::string& filter
   int passed = 0;
   for (TestOutcome& t : second) {
     passed += t.passed ? 1 : 0;
+    t.ranAgain = true;
     for (TestOutcome& first : run.tests) {
       if (first.name == t.name) first = std::move(t);
     }
@@ -135,13 +144,14 @@ void runAgainWhatTheMachineEnded(const Rubric& rubric, const std::string& filter
                       std::to_string(passed) + " passed the second time");
 }
 
-// A check the grader alone failed, twice: the grading cannot stand.
+// A check the grader alone failed (twice, or once with no time left to run it again): the
+// grading cannot stand.
 void flagMachineFailures(ChecksRun& run) {
   for (const TestOutcome& t : run.tests) {
     if (t.passed || !t.graderFailedIt) continue;
     run.errors.push_back("regrade: the grading machine failed (" + t.name +
-                         ": the probe could not be started, was killed or the grader erred, "
-                         "twice)");
+                         ": the probe could not be started or the grader erred, " +
+                         (t.ranAgain ? "twice)" : "and no time was left to run it again)"));
     return;
   }
 }

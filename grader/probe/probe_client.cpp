@@ -432,8 +432,9 @@ struct ProbeClient::Impl {
       alive = process->alive();
     }
     const Exit exit = shutdown(alive ? "closed its answer pipe" : "crashed");
-    // SIGKILL is sent by the grader only at a time limit (not this path): the machine ended it.
-    const bool killed = !alive && exit.kind == Exit::Kind::Signaled && exit.code == SIGKILL;
+    // SIGKILL is sent by the grader only at a time limit (not this path), and by the CPU limit
+    // once it is used up: otherwise the machine ended it.
+    const bool killed = !alive && killedByTheMachine(exit, limits);
     if (!killed) ++incidents.crashes;
     std::string text = alive ? "the probe closed its answer pipe without answering, so it was "
                                "stopped"
@@ -445,8 +446,9 @@ struct ProbeClient::Impl {
     if (!last.empty()) text += "\nthe last lines it printed:\n" + last;
     if (killed) {
       return failure(Fault::Killed,
-                     "the grading machine stopped your code (SIGKILL, not sent by the grader: out "
-                     "of memory, or another program): a grader problem, not yours");
+                     "your code was killed by SIGKILL, which neither the grader nor its limits "
+                     "sent (the machine ran out of memory, another program, or the code itself)" +
+                         (last.empty() ? std::string() : "\nthe last lines it printed:\n" + last));
     }
     return failure(Fault::Crashed, text);
   }

@@ -39,9 +39,10 @@ struct TestOutcome {
   /// The machine may have ended it, not the code (a time limit, a probe killed or not started):
   /// a failed check so marked is run again (checks stage). Not in results.json.
   bool machineMayHaveEndedIt = false;
-  /// It failed for the grader alone (a probe that could not start or was killed, a grader
-  /// error): a repeat makes the grading the machine's failure, never the student's 0.
+  /// It failed for the grader alone (a probe that could not start, a grader error): a repeat
+  /// makes the grading the machine's failure, never the student's 0.
   bool graderFailedIt = false;
+  bool ranAgain = false;  ///< this is the outcome of its second run
 };
 
 /// One rubric item, scored.

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -249,7 +250,14 @@ int endStrayChildren(const std::vector<pid_t>& keep) {
   return ended;
 }
 
+namespace {
+std::atomic<bool> gPidNamespaceRefused{false};
+}
+
+void pidNamespaceRefused() { gPidNamespaceRefused = true; }
+
 bool pidNamespaces() {
+  if (gPidNamespaceRefused) return false;
   static const bool allowed = [] {
     if (geteuid() != 0) return false;
     const long pid = syscall(SYS_clone, CLONE_NEWPID | SIGCHLD, 0, 0, 0, 0);

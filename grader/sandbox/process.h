@@ -75,8 +75,11 @@ std::optional<int> waitFor(pid_t pid, double seconds, bool* vanished = nullptr);
 int endStrayChildren(const std::vector<pid_t>& keep);
 
 /// Whether sandboxed children get a pid namespace each (root, and the kernel allows it; found
-/// once by trying). When false, what a submission leaves running is ended by its uid.
+/// once by trying, and false from the first sandbox that could not get one). When false, what a
+/// submission leaves running is ended by its uid.
 bool pidNamespaces();
+/// A sandbox could not get its pid namespace (sandbox.cpp): from now on pidNamespaces() is false.
+void pidNamespaceRefused();
 
 /// The child of `parent` whose pid in its own namespace is `nsPid` (the program under a keeper:
 /// 2), found in /proc; nothing when there is none.

@@ -13,3 +13,10 @@ add_library(a6_sandbox STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/sandbox.cpp)
 target_include_directories(a6_sandbox PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_sandbox PUBLIC a6_process PkgConfig::SECCOMP Threads::Threads)
 target_compile_options(a6_sandbox PRIVATE ${A6_WARNINGS})
+
+# The init of each sandboxed command's pid namespace, exec'd by the grader's copy that set it up
+# (without it, that copy keeps the loop itself, holding the grader's memory copy-on-write).
+add_executable(a6_keeper ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/keeper_main.cpp)
+target_compile_options(a6_keeper PRIVATE ${A6_WARNINGS})
+add_dependencies(a6_sandbox a6_keeper)
+target_compile_definitions(a6_sandbox PRIVATE A6_KEEPER="$<TARGET_FILE:a6_keeper>")

@@ -64,7 +64,8 @@ struct Exit {
   std::string output;  ///< captured stdout+stderr, capped at Limits::outputBytes
   bool outputTruncated = false;
   double wallSeconds = 0;
-  std::string error;  ///< FailedToStart: why ("exec /x/a6_probe: Permission denied ...")
+  double cpuSeconds = 0;  ///< CPU time of the program and what it waited for (0 when timed out)
+  std::string error;      ///< FailedToStart: why ("exec /x/a6_probe: Permission denied ...")
   std::vector<std::string> notes;  ///< protections that could not be applied, and why
   std::string describe() const;  ///< "exited with 1", "killed by SIGSEGV (segmentation fault)", ...
   bool ok() const { return kind == Kind::Exited && code == 0; }
@@ -89,6 +90,11 @@ struct SandboxSpec {
   uid_t uid = 65534;                  ///< who the child runs as when the grader is root
   gid_t gid = 65534;                  ///< (nobody / nogroup)
 };
+
+/// True when `e` was killed by a SIGKILL that neither the grader (it kills at the wall-clock
+/// limit: Kind::TimedOut) nor the CPU limit sent (it had not used it up): the machine's doing
+/// (out of memory, another program), not the code's.
+bool killedByTheMachine(const Exit& e, const Limits& limits);
 
 /// Runs a command to completion in the sandbox (the compiler, the linker). Never throws for
 /// what the command does; a setup failure is Kind::FailedToStart with `error`.

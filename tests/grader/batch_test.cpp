@@ -1080,6 +1080,36 @@ TEST(Batch, ACanvasDownloadIsRecognised) {
 
 // A submission's compiler and probe cannot read another submission of the batch (a6_batch
 // hides the input and output folders from them). Outside the build tree, which is hidden anyway.
+// One submission cannot set another's grade through what is compiled: one text whose object
+// depends on where it is compiled (here, whether alice's results exist, which only alice's
+// grading sees) gives each grading its own object, in any order and in a regrade.
+TEST(Batch, TheSameTextCompiledInTwoGradingsGivesEachItsOwnObject) {
+  if (geteuid() != 0) GTEST_SKIP() << "only root hides the other submissions' folders";
+  const fs::path dir = caseDir("same_text");
+  const fs::path in = dir / "in", out = dir / "out";
+  const std::string probe = (out / "alice" / "results.json").string();
+  const std::string forces = "#if __has_include(\"" + probe + "\")\n" +
+                             readAll(kSource / "starter" / "forces.cpp") + "\n#else\n" +
+                             readAll(kSource / "solution" / "forces.cpp") + "\n#endif\n";
+  for (const char* student : {"alice", "bob"}) {
+    fs::create_directories(in / student);
+    fs::copy(kSource / "solution", in / student, fs::copy_options::recursive);
+    writeAll(in / student / "forces.cpp", forces);
+  }
+  for (const std::string extra : {"-j 1", "-j 1 --force", "-j 2 --force"}) {
+    const Ran r = batchRun(in, out, extra);
+    EXPECT_EQ(r.status, 0) << r.output;
+    const Gradebook g = readGradebook(out / "gradebook.csv");
+    ASSERT_EQ(g.error, "") << r.output;
+    const auto* alice = g.row("alice");
+    const auto* bob = g.row("bob");
+    ASSERT_TRUE(alice != nullptr && bob != nullptr) << r.output;
+    EXPECT_DOUBLE_EQ(pointsOf(*alice, "task2"), 0) << extra << ": alice's compile saw her results";
+    EXPECT_DOUBLE_EQ(pointsOf(*bob, "task2"), rubricPoints(false).at(2))
+        << extra << ": bob was handed an object compiled for alice";
+  }
+}
+
 TEST(Batch, ASubmissionCannotReadAnotherOne) {
   if (geteuid() != 0) GTEST_SKIP() << "only root hides folders (mount namespaces)";
   // Not in /tmp either: the probe's sandbox covers /tmp whatever a6_batch asks.

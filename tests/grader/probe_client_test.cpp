@@ -14,7 +14,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <thread>
 
 #include "harness/wire.h"
 #include "sandbox_user.h"
@@ -255,6 +257,48 @@ TEST_F(HostileProbe, ACrashFailsItsRequestAndTheNextOneGetsAFreshProbe) {
   EXPECT_EQ(probe.starts(), 2);
   EXPECT_FALSE(fs::exists(tmp.path() / "run" / "probe-1")) << "the dead probe's work dir is gone";
   EXPECT_TRUE(fs::exists(tmp.path() / "run" / "probe-2"));
+}
+
+// "Crashed" means the code crashed: a probe killed by a SIGKILL that neither the grader nor the
+// CPU limit sent (the kernel's OOM killer, another program) is the machine's (Fault::Killed, run
+// again by the checks), never charged as the code's crash.
+TEST_F(HostileProbe, AKillFromOutsideIsTheMachinesNotACrash) {
+  if (geteuid() != 0) GTEST_SKIP() << "as another user, the probe runs as this one";
+  probe.setRequestTimeout(20);
+  std::thread killer([] {
+    for (int k = 0; k < 100; ++k) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      for (const process::Info& p : process::all()) {
+        std::ifstream in("/proc/" + std::to_string(p.pid) + "/cmdline");
+        std::string cmdline;
+        std::getline(in, cmdline, '\0');
+        // This test's probe: its program, run as this test process's own sandbox user.
+        if (cmdline == kHostile.string() && p.state != 'Z' && p.realUid == a6::test::sandboxUid()) {
+          kill(p.pid, SIGKILL);
+          return;
+        }
+      }
+    }
+  });
+  const auto r = probe.springForce(spring(14));
+  killer.join();
+  EXPECT_EQ(r.fault, harness::Fault::Killed) << r.error;
+  EXPECT_EQ(probe.incidents().crashes, 0);
+  expectHealthy();
+}
+
+// ... while one killed by its CPU limit (it ignored SIGXCPU) ran out of its own time: a crash of
+// the code's.
+TEST(ProbeClient, AKillByTheCpuLimitIsTheCodes) {
+  TempDir tmp;
+  Limits limits;
+  limits.cpuSeconds = 1;
+  ProbeClient probe(kHostile, tmp.path() / "run", limits);
+  probe.setUser(a6::test::sandboxUid(), 65534);
+  probe.setRequestTimeout(30);
+  const auto r = probe.springForce(spring(25));
+  EXPECT_EQ(r.fault, harness::Fault::Crashed) << r.error;
+  EXPECT_TRUE(contains(r.error, "SIGKILL")) << r.error;
 }
 
 TEST_F(HostileProbe, ACrashReportEndsWithTheLastLinesItPrinted) {

@@ -16,6 +16,7 @@ if [ "$(id -u)" != 0 ]; then
   echo "skipped: needs root"
   exit 77
 fi
+command -v jq >/dev/null || { echo "skipped: no jq (scripts/install-deps.sh installs it)"; exit 77; }
 rm -rf "$out" && mkdir -p "$out" && chmod 755 "$out"
 
 # full_marks DIR: every item passed, no grader error; prints why not.
