@@ -8,6 +8,9 @@
 #   has): they cannot see each other's lock files, and must still both get every point.
 # MODE under-load: the solution and a correct alternative graded at once beside busy loops four
 #   times the machine's cores; both must get every point (no time is asserted).
+# MODE killed-once: the solution graded while something outside (the kernel's OOM killer, another
+#   program) kills its probes with SIGKILL, three times at random moments: a check that was
+#   running is run again, no kill is charged as a crash, and the solution gets every point.
 # Every point: every item of results.json passed, and no grader error. Exit 77 (skipped) when not
 # root: without root there is no sandbox user and no namespace to share.
 set -uo pipefail
@@ -66,6 +69,28 @@ under-load)
   echo "beside $hogs busy loops: solution $(jq -r .score "$out/solution/results.json")," \
     "alternative $(jq -r .score "$out/alternative/results.json")"
   for g in solution alternative; do full_marks "$out/$g" || failed=$((failed + 1)); done
+  ;;
+killed-once)
+  "$grade" "$root/solution" --out "$out/killed" >"$out/killed.log" 2>&1 &
+  g=$!
+  kills=0
+  for _ in $(seq 1 1200); do
+    kill -0 "$g" 2>/dev/null || break
+    pid=$(pgrep -f "^$out/killed/work/(build/)?a6_probe" | head -1)
+    if [ -n "$pid" ] && [ "$kills" -lt 3 ]; then
+      sleep 0.$((RANDOM % 5))
+      kill -KILL "$pid" 2>/dev/null && kills=$((kills + 1))
+    fi
+    sleep 0.05
+  done
+  wait "$g"
+  [ "$kills" -gt 0 ] || { echo "no probe was found to kill"; failed=1; }
+  echo "killed a probe $kills times: score $(jq -r .score "$out/killed/results.json")," \
+    "crashes charged: $(jq -r .extra_data.incidents.crashes "$out/killed/results.json")"
+  jq -r '.extra_data.notes[]' "$out/killed/results.json"
+  jq -e '.extra_data.incidents.crashes == 0' "$out/killed/results.json" >/dev/null ||
+    { echo "a kill from outside was charged as a crash"; failed=$((failed + 1)); }
+  full_marks "$out/killed" || failed=$((failed + 1))
   ;;
 *)
   echo "unknown mode $mode"
