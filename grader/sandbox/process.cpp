@@ -340,17 +340,16 @@ UidClaim claimUid(std::optional<uid_t> wanted, std::string& error) {
     claim.uid_ = *wanted;
     // Its processes are not ours to end (another grading's, or what one left behind), unless
     // there is no pid namespace to end what each sandbox starts: then they are found by uid.
-    if (pidNamespaces() && inUse(*wanted, all())) {
-      error = "sandbox uid " + std::to_string(*wanted) +
-              " is in use by processes this grading did not start: give another uid, or none "
-              "(a grading draws an unused one)";
-      return UidClaim{};
-    }
-    if (!pidNamespaces()) {
-      if (const std::string e = endProcessesOf(*wanted); !e.empty()) {
-        error = "sandbox uid " + std::to_string(*wanted) + ": " + e;
+    if (pidNamespaces()) {
+      if (inUse(*wanted, all())) {
+        error = "sandbox uid " + std::to_string(*wanted) +
+                " is in use by processes this grading did not start: give another uid, or none "
+                "(a grading draws an unused one)";
         return UidClaim{};
       }
+    } else if (const std::string e = endProcessesOf(*wanted); !e.empty()) {
+      error = "sandbox uid " + std::to_string(*wanted) + ": " + e;
+      return UidClaim{};
     }
   } else if (!drawUnusedUid(claim.fd_, claim.uid_, error)) {
     return claim;
