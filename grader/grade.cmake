@@ -10,8 +10,9 @@ if(NOT TARGET a6_suite OR NOT TARGET a6_golden_checks)
   return()
 endif()
 
-add_executable(a6_grade
-  ${CMAKE_CURRENT_SOURCE_DIR}/main.cpp
+# The stages (everything but the command line), also linked by the tests' graders of a wrong
+# version or an alternative whose code is linked in (tests/grader/linked_grade_main.cpp).
+add_library(a6_grading OBJECT
   ${CMAKE_CURRENT_SOURCE_DIR}/grading/grading.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/checks.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/collector.cpp
@@ -19,13 +20,18 @@ add_executable(a6_grade
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/recording_student.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/replays.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/build/startup.cpp)
-target_include_directories(a6_grade PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(a6_grade PRIVATE a6_suite a6_golden_checks a6_report a6_rubric a6_intake
-                                       a6_build a6_probe_client a6_mistakes
-                                       a6_replay_view CLI11::CLI11 GTest::gtest)
+target_include_directories(a6_grading PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(a6_grading PUBLIC a6_suite a6_golden_checks a6_report a6_rubric a6_intake
+                                        a6_build a6_probe_client a6_mistakes
+                                        a6_replay_view GTest::gtest)
 # The reference force models the probe of tasks 3 and 5 asks for (they stay in a6_grade).
-target_include_directories(a6_grade PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
-target_compile_definitions(a6_grade PRIVATE
-  A6_DEFAULT_RUBRIC="${A6_DEFAULT_RUBRIC}" A6_FORCE_MODELS="${A6_FORCE_MODELS}")
+target_include_directories(a6_grading PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+target_compile_definitions(a6_grading PRIVATE A6_FORCE_MODELS="${A6_FORCE_MODELS}")
+target_compile_options(a6_grading PRIVATE ${A6_WARNINGS})
+
+add_executable(a6_grade ${CMAKE_CURRENT_SOURCE_DIR}/main.cpp)
+# (An object library's objects go only to what links it directly: the checks' too.)
+target_link_libraries(a6_grade PRIVATE a6_grading a6_suite a6_golden_checks CLI11::CLI11)
+target_compile_definitions(a6_grade PRIVATE A6_DEFAULT_RUBRIC="${A6_DEFAULT_RUBRIC}")
 target_compile_options(a6_grade PRIVATE ${A6_WARNINGS})
 add_dependencies(a6_grade a6_grader_kit)  # grading builds against the kit

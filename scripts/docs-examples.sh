@@ -114,9 +114,15 @@ example_student_summary() {
   "$build/tests/a6_tests_starter" 2>/dev/null | sed -n '/^Summary by task$/,/^A6-SUMMARY/p' | sed '$d'
 }
 
+# The first failed check of a wrong spring, as its grading wrote it (the ctest entry
+# wrong_t1_wrong_sign, which ctest runs before this one; by hand, the grading is made here).
 example_failure_message() {
-  "$build/tests/a6_tests_wrong_t1_wrong_sign" --gtest_filter=Task1Spring.StretchedPullsP2TowardsP1 2>&1 |
-    sed -n '/^Task 1 (spring.cpp)/,/hint:/p'
+  local results="$build/tests/grader/scores_out/wrong_t1_wrong_sign/out/results.json"
+  if [ ! -f "$results" ]; then
+    "$build/tests/grader/a6_graded_wrong_t1_wrong_sign" --out "$scratch/t1_wrong_sign" >/dev/null
+    results="$scratch/t1_wrong_sign/results.json"
+  fi
+  jq -r '.tests[].output' "$results" | awk '/^Task 1 \(spring.cpp\)/ { on = 1 } on { print } on && /hint:/ { exit }'
 }
 
 # ---- markers and blocks ----------------------------------------------------------------------

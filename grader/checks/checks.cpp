@@ -271,7 +271,7 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
   ChecksRun run;
   std::string unavailable = in.unavailable;
   std::unique_ptr<ProbePair> probes;
-  if (unavailable.empty()) {
+  if (unavailable.empty() && in.linked == nullptr) {
     try {
       probes = startProbes(in);
     } catch (const std::exception& e) {
@@ -279,7 +279,8 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
       unavailable = "the grader could not start your code (a grader problem, not yours)";
     }
   }
-  BudgetedStudent student(probes.get(), hooksOf(probes.get()), unavailable);
+  harness::StudentCode* code = in.linked != nullptr ? in.linked : probes.get();
+  BudgetedStudent student(code, hooksOf(probes.get()), unavailable);
   student.setTotalBudget(in.timeBudget);
   RecordingStudent recorded(student);
   a6::test::WatchedStudent watched(recorded);
@@ -303,9 +304,9 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
                          " checks were skipped (the grader's environment could not run them; see "
                          "each check's message): they earned nothing");
   }
-  if (probes != nullptr) {
+  if (code != nullptr) {
     try {
-      collectIncidents(*probes, student, run);
+      if (probes != nullptr) collectIncidents(*probes, student, run);
       // After the incidents are counted: the replays are feedback, never a check's. A student
       // release has no reference replays, and so no replays.
       run.replayFolder = a6::test::replayFolder();

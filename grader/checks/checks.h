@@ -18,6 +18,7 @@
 
 #include "checks/scene_run.h"
 #include "checks/transcript.h"
+#include "harness/student_code.h"
 #include "report/report.h"
 #include "scoring/rubric.h"
 
@@ -64,6 +65,9 @@ struct ChecksInput {
   std::string filter;  ///< the checks registered to run ("": all), restored after a re-run
   bool progress = false;
   bool replays = true;  ///< run each imaged scene once more for the report's replays
+  /// The student's code linked into this program (tests only, GradeOptions::linked), asked in
+  /// place of the probes; null: the probes.
+  harness::StudentCode* linked = nullptr;
 };
 
 /// What running the checks gave.

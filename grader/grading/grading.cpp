@@ -91,6 +91,7 @@ class Grading {
     if (!begin()) return 1;
     if (!rubric_.ok())
       return stop(Stop::UnusableRubric, "the rubric is invalid:\n" + rubric_.error);
+    if (options_.linked != nullptr) return runLinked();
     claimSandboxUser();
     prepareWork();
     if (const std::optional<int> stopped = intake()) return *stopped;
@@ -121,6 +122,17 @@ class Grading {
   void nameMistakes();
   void buildReplays();
   int finish();
+
+  // The stages after the build, against code linked into this program (GradeOptions::linked).
+  int runLinked() {
+    report_.seed = options_.seed.value_or(1);
+    prepareWork();
+    if (const std::optional<int> stopped = registerChecks()) return *stopped;
+    check();
+    nameMistakes();
+    buildReplays();
+    return finish();
+  }
 
   const GradeOptions& options_;
   const Rubric& rubric_;
@@ -305,6 +317,7 @@ void Grading::buildWith(Kit& kit) {
 // 3. Run the checks here, against the probe.
 void Grading::check() {
   ChecksInput in;
+  in.linked = options_.linked;
   in.probe = report_.build.probe;
   in.modelsProbe = report_.build.modelsProbe;
   in.work = work_;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "checks/checks.h"
+#include "harness/student_code.h"
 #include "scoring/rubric.h"
 
 namespace a6::grader {
@@ -31,6 +32,10 @@ struct GradeOptions {
   std::string filter;  ///< only the checks matching this GoogleTest filter
   bool quiet = false;
   bool color = false;
+  /// The student's code linked into this program (the tests' grading of a wrong version or a
+  /// correct alternative, tests/grader/linked_grade_main.cpp), or null: a6_grade's own. With it,
+  /// nothing is taken in, built or sandboxed: the checks ask it, and `seed` is required.
+  harness::StudentCode* linked = nullptr;
 };
 
 /// Grades one submission. Exit status: 0 when grading completed, whatever the score; 1 when the

@@ -569,10 +569,11 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
   add("solution");
   fs::copy(kSource / "starter", in / "starter", fs::copy_options::recursive);
   add("starter");
+  // Two wrong versions, for the gradebook's mistakes column and task columns (every wrong
+  // version is graded on its own by its ctest entry, wrong_<name>).
   const std::vector<std::string> allWrong = staging::wrongVersions();
-  ASSERT_GE(allWrong.size(), 6u);
-  std::vector<std::string> wrong;
-  for (std::size_t i = 0; i < 6; ++i) wrong.push_back(allWrong[i * allWrong.size() / 6]);
+  ASSERT_GE(allWrong.size(), 2u);
+  const std::vector<std::string> wrong = {allWrong.front(), allWrong[allWrong.size() / 2]};
   for (const std::string& name : wrong) {
     staging::stageWrong(in / ("wrong_" + name), name);
     add("wrong_" + name);
@@ -604,7 +605,7 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
   fs::create_directories(in / "empty");
   add("empty");
   writeAll(in / "README.txt", "submissions downloaded on Monday");
-  ASSERT_GE(students.size(), 20u);
+  ASSERT_GE(students.size(), 19u);
 
   // Short time limits for the cases that never return (the correct checks take hundredths of
   // a second): the endless loop costs task 1's checks 2 s each.
@@ -736,13 +737,10 @@ TEST(Batch, AnInterruptedBatchResumesWithWhatIsLeft) {
   fs::create_directories(in);
   fs::copy(kSource / "solution", in / "solution", fs::copy_options::recursive);
   fs::copy(kSource / "starter", in / "starter", fs::copy_options::recursive);
-  const std::vector<std::string> wrong = staging::wrongVersions();
-  ASSERT_GE(wrong.size(), 6u);
-  for (std::size_t i = 0; i < 6; ++i) {
-    const std::string& name = wrong[i * wrong.size() / 6];  // one of each task's
-    staging::stageWrong(in / name, name);
-  }
-  const int total = 8;
+  // Two more that lose some points: the solution with the starter's file of task 2, of task 5.
+  staging::stage(in / "no_task2", "", {2});
+  staging::stage(in / "no_task5", "", {5});
+  const int total = 4;
 
   const pid_t pid = startBatch(in, out, dir / "first.log", {"-j", "2"});
   ASSERT_GT(pid, 0);

@@ -10,13 +10,18 @@
 //     models of the others;
 //   - the same submission graded twice: the same results.json, timing fields aside.
 //
-// Each wrong version is its own ctest entry (grader_scores_wrong_<name>), so they run in parallel.
+// Each wrong version and each alternative is graded once, by its own ctest entry (wrong_<name>,
+// alternative_<name>, tests/grader/CMakeLists.txt), with its files linked into the grader's
+// stages (linked_grade_main.cpp: no sandbox, no build; the solution, the starter and the hostile
+// submissions prove the sandbox): that one grading gives the physics checks' verdict with its
+// margins (each wrong task misses by ten times its tolerance), the images' and the scores'.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -65,6 +70,44 @@ Graded grade(const fs::path& submission, const fs::path& out, const std::string&
   g.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   g.results = json::parse(readAll(out / "results.json"), nullptr, false);
   return g;
+}
+
+// The ctest entry's linked grader (a6_graded_<set>, linked_grade_main.cpp): the set's one
+// grading, with the suite's summary per task and its margins on stdout.
+Graded gradeLinked(const fs::path& out) {
+  Graded g;
+  const char* program = std::getenv("A6_LINKED_GRADER");
+  if (program == nullptr) {
+    ADD_FAILURE() << "A6_LINKED_GRADER is not set: run this case through its ctest entry";
+    return g;
+  }
+  const std::string command = std::string(program) + " --out '" + out.string() + "' 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return g;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) g.output.append(buffer, n);
+  const int raw = pclose(pipe);
+  g.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  g.results = json::parse(readAll(out / "results.json"), nullptr, false);
+  return g;
+}
+
+// "<key> 1:<a>:<b> 2:..." from the linked grader's output: task -> its fields after the task.
+std::map<int, std::vector<std::string>> taskLine(const std::string& output,
+                                                 const std::string& key) {
+  std::map<int, std::vector<std::string>> fields;
+  const std::size_t at = output.find("\n" + key + " ");
+  if (at == std::string::npos) return fields;
+  std::istringstream line(output.substr(at + key.size() + 2, output.find('\n', at + 1) - at));
+  for (std::string word; line >> word;) {
+    std::istringstream parts(word);
+    std::string part;
+    std::getline(parts, part, ':');
+    const int task = std::atoi(part.c_str());
+    while (std::getline(parts, part, ':')) fields[task].push_back(part);
+  }
+  return fields;
 }
 
 fs::path outDir(const std::string& name) {
@@ -217,10 +260,6 @@ void expectNoGradingPaths(const Graded& g, const fs::path& dir) {
   }
 }
 
-// The wrong versions are prepared in staging.h (batch_test.cpp grades them in a batch).
-fs::path stageWrong(const std::string& name, const fs::path& dir) {
-  return a6::test::staging::stageWrong(dir / "submission", name);
-}
 using a6::test::staging::failingTasks;
 using a6::test::staging::wrongVersions;
 
@@ -294,6 +333,59 @@ TEST(Scores, AnOutputFolderTheSandboxCannotEnter) {
   EXPECT_FALSE(fs::exists(scratch)) << scratch << ": the scratch folder was not removed";
 }
 
+// The physics suite's verdict (tests/support/summary.h): every wrong task has a failed check,
+// each of them missing by at least ten times the tolerance it crossed ("inf": it failed for a
+// reason that is not a number, a count or a NaN), and no other task has one.
+void expectMargins(const Graded& g, const std::string& name, const std::set<int>& failing) {
+  const auto counts = taskLine(g.output, "A6-SUMMARY");
+  const auto margins = taskLine(g.output, "A6-MARGIN");
+  ASSERT_EQ(counts.size(), 7u) << "no summary per task:\n" << g.output.substr(0, 4000);
+  for (const auto& [task, fields] : counts) {
+    ASSERT_EQ(fields.size(), 2u);
+    const int passed = std::atoi(fields[0].c_str()), failed = std::atoi(fields[1].c_str());
+    EXPECT_GT(passed + failed, 0) << "task " << task << " ran no check";
+    if (!failing.count(task)) {
+      EXPECT_EQ(failed, 0) << name << ": task " << task << " must pass";
+      continue;
+    }
+    ASSERT_GT(failed, 0) << name << ": task " << task << " must fail";
+    const std::string margin = margins.count(task) ? margins.at(task).at(0) : "none";
+    std::printf("[ margins  ] %s: task %d misses by %s times its tolerance at least\n",
+                name.c_str(), task, margin.c_str());
+    if (margin == "inf") continue;
+    EXPECT_TRUE(margin != "none" && std::atof(margin.c_str()) >= 10)
+        << name << ": task " << task << "'s margin is " << margin
+        << ", under 10: a check misses by less than 10 times its tolerance";
+  }
+}
+
+// The images' verdict: the images of scenes that run a wrong task do not all pass, except for
+// the mistakes no scene shows (A6_IMAGES_UNSEEN=1, tests/grader/CMakeLists.txt says why): those
+// pass every image.
+void expectImagesSee(const Graded& g, const std::string& name, const std::set<int>& failing) {
+  const char* unseenValue = std::getenv("A6_IMAGES_UNSEEN");
+  const bool unseen = unseenValue != nullptr && std::string(unseenValue) == "1";
+  int ran = 0, failed = 0;
+  for (const auto& [check, outcome] : g.results["extra_data"]["tests"].items()) {
+    const auto image = imageTasks().find(check);
+    if (image == imageTasks().end()) continue;
+    const bool runsWrongCode = std::any_of(failing.begin(), failing.end(),
+                                           [&](int t) { return image->second.count(t) != 0; });
+    if (!runsWrongCode) continue;
+    ++ran;
+    failed += outcome == "failed" ? 1 : 0;
+  }
+  std::printf("[ images   ] %s: %d of the %d images whose scene runs its code fail\n", name.c_str(),
+              failed, ran);
+  if (unseen) {
+    EXPECT_EQ(failed, 0) << name << " is listed as unseen by the images, but " << failed
+                         << " fail: a scene now shows it (move it out of A6_GOLDEN_UNSEEN)";
+  } else {
+    EXPECT_GT(ran, 0) << name << ": no image's scene runs its task";
+    EXPECT_GT(failed, 0) << name << ": no image of a scene that runs its code fails";
+  }
+}
+
 class WrongVersion : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
@@ -301,10 +393,12 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
   const std::set<int> failing = failingTasks(name);
   ASSERT_FALSE(failing.empty()) << "tests/wrong/" << name << "/EXPECT names no task";
   const fs::path dir = outDir("wrong_" + name);
-  const Graded g = grade(stageWrong(name, dir), dir / "out");
+  const Graded g = gradeLinked(dir / "out");
   expectCompleted(g);
   if (HasFatalFailure()) return;
   expectNoGradingPaths(g, dir);
+  expectMargins(g, name, failing);
+  expectImagesSee(g, name, failing);
   const auto got = perTask(g.results, false), full = perTask(g.results, true);
   std::ostringstream table;
   for (const auto& [task, points] : full) {
@@ -373,10 +467,13 @@ class CorrectAlternative : public ::testing::TestWithParam<std::string> {};
 TEST_P(CorrectAlternative, GetsEveryPoint) {
   const std::string name = GetParam();
   const fs::path dir = outDir("alternative_" + name);
-  const Graded g =
-      grade(a6::test::staging::stageAlternative(dir / "submission", name), dir / "out");
+  const Graded g = gradeLinked(dir / "out");
   expectCompleted(g);
   if (HasFatalFailure()) return;
+  expectMargins(g, name, {});
+  for (const auto& [check, outcome] : g.results["extra_data"]["tests"].items()) {
+    EXPECT_EQ(outcome, "passed") << name << ": " << check;
+  }
   double all = 0;
   for (const RubricItem& item : rubric().items) all += item.points;
   EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), all) << g.results.dump(2).substr(0, 8000);
@@ -403,16 +500,12 @@ INSTANTIATE_TEST_SUITE_P(Alternative, CorrectAlternative,
                          });
 
 // The seed is derived from the files (no --seed here), the messages hold computed values: still,
-// twice the same submission gives the same results.json, timing aside.
+// twice the same submission gives the same results.json, timing aside. The submission: the
+// solution with the starter's spring and particle system (failed checks with values in their
+// messages, random inputs in task 5's).
 TEST(Scores, GradingTwiceGivesTheSameResults) {
-  const std::vector<std::string> names = wrongVersions();
-  ASSERT_FALSE(names.empty());
-  const std::string name =
-      std::find(names.begin(), names.end(), "t5_emitter_ignores_spread") != names.end()
-          ? "t5_emitter_ignores_spread"
-          : names.front();
   const fs::path dir = outDir("twice");
-  const fs::path sub = stageWrong(name, dir);
+  const fs::path sub = a6::test::staging::stage(dir / "submission", "", {1, 5});
   Graded a = grade(sub, dir / "a"), b = grade(sub, dir / "b");
   expectCompleted(a);
   expectCompleted(b);

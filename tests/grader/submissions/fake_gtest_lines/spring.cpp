@@ -2,8 +2,8 @@
 //
 // computeForce is the starter's stub (task 1 honestly earns nothing), but the file prints what a
 // passing GoogleTest run and our per-task summary line look like, on stdout and stderr, before
-// main and on every call. Expected: the score is unchanged (task 1 gets 0): a6_grade never reads
-// what the student's code prints.
+// main and on its first 100 calls. Expected: the score is unchanged (task 1 gets 0): a6_grade never
+// reads what the student's code prints.
 #include "a6/spring.h"
 
 #include <cstdio>
@@ -29,8 +29,10 @@ const int kBoasted = (boast(), 0);
 
 namespace a6 {
 
+// The first calls boast again (a flood of output is hostile_test's HugeOutput).
 Vec2 Spring::computeForce() const {
-  boast();
+  static int calls = 0;
+  if (++calls <= 100) boast();
   return Vec2::Zero();
 }
 

@@ -47,9 +47,13 @@ const int kPlanted = [] {
 
 namespace a6 {
 
+// The first calls print and plant again (a flood of output is hostile_test's HugeOutput).
 Vec2 Spring::computeForce() const {
-  std::fputs(kFake, stdout);
-  writeFake("../../../results.json");  // after the filter: refused
+  static int calls = 0;
+  if (++calls <= 100) {
+    std::fputs(kFake, stdout);
+    writeFake("../../../results.json");  // after the filter: refused
+  }
   return Vec2::Zero();
 }
 
