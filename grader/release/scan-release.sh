@@ -67,15 +67,16 @@ if [ ! -s "$work/lines" ]; then
   exit 1
 fi
 
+# One grep over every text file finds those holding a secret line anywhere in a line (a
+# superset); only they are compared line by line, trimmed.
 while IFS= read -r -d '' file; do
-  grep -Iq . "$file" 2>/dev/null || continue  # binary
   if hits="$(trimmed "$file" | grep -nFx -f "$work/lines")"; then
     while IFS= read -r hit; do
       echo "scan: ${file#"$dest"/}:${hit%%:*}: solution text: ${hit#*:}" >&2
     done <<<"$hits"
     found=1
   fi
-done < <(find "$dest" -type f -print0)
+done < <(find "$dest" -type f -print0 | xargs -0 -r grep -IlZF -f "$work/lines" -- 2>/dev/null)
 
 # Helpers that compute the answer, by their name: a definition (not a call) of a function or a
 # lambda named expected..., correct..., answer..., solution..., oracle..., ideal... (any case) in
