@@ -72,3 +72,21 @@ macro(a6_line_tables_only)
   string(REGEX REPLACE "(^| )-g( |$)" "\\1-g1\\2" CMAKE_CXX_FLAGS_RELWITHDEBINFO
                        "${CMAKE_CXX_FLAGS_RELWITHDEBINFO}")
 endmacro()
+
+# a6_configured_path(<target> <name> <path>): the path (generator expressions allowed) as
+# `a6::paths::<name>`, a `const char[]` defined in a file of its own that is generated for
+# <target> (code declares `namespace a6::paths { extern const char <name>[]; }`). A path given
+# as a -D definition would make the large file that reads it compile differently in every copy
+# of the checkout (ccache hashes the definitions as they are); kept out of it, that file is
+# compiled once for all copies (the student release, the Gradescope package, a second checkout).
+function(a6_configured_path target name path)
+  set(file ${CMAKE_CURRENT_BINARY_DIR}/a6_paths/${target}_${name}.cpp)
+  file(GENERATE OUTPUT ${file} CONTENT
+       "// Generated (cmake/A6FastBuild.cmake, a6_configured_path): a path of this build.
+namespace a6::paths {
+extern const char ${name}[];
+const char ${name}[] = \"${path}\";
+}  // namespace a6::paths
+")
+  target_sources(${target} PRIVATE ${file})
+endfunction()

@@ -31,6 +31,9 @@
 #include "scoring/rubric.h"
 
 namespace fs = std::filesystem;
+namespace a6::paths {
+extern const char rubric[];  // the default rubric (cmake/A6FastBuild.cmake, a6_configured_path)
+}  // namespace a6::paths
 using namespace a6::grader;
 
 namespace {
@@ -50,7 +53,7 @@ fs::path besideProgram(const std::string& name) {
 }
 
 fs::path defaultRubric() {
-  if (fs::exists(A6_DEFAULT_RUBRIC)) return A6_DEFAULT_RUBRIC;
+  if (fs::exists(a6::paths::rubric)) return a6::paths::rubric;
   return besideProgram("rubric.toml");
 }
 

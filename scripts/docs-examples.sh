@@ -199,12 +199,31 @@ check_facts() {
   "$grade" --public-rubric "$scratch/public.toml"
   public_total=$(sed -n 's/^total = \([0-9]*\)\(\.0*\)\{0,1\}$/\1/p' "$scratch/public.toml")
   fact README.md "then runs the $tests tests"
+  fact README.md "the quick tier, its $(ctest --test-dir "$build" -N -L quick | sed -n 's/^Total Tests: //p') tests"
   fact docs/instructor.md "the $images public images"
   fact docs/instructor.md "the $hidden_images hidden ones"
   fact docs/instructor.md "(total $public_total instead of 100)"
   fact docs/instructor.md "all $checks checks"
   fact docs/rendering.md "holds $images reference images"
   fact docs/rendering.md "($golden_tests ctest tests"
+  check_costs
+}
+
+# The suite's costs (docs/test-costs.md, made by scripts/test-costs.sh from a clean run of
+# .ci/run): the table has a row for each ctest entry and no other, and README.md quotes its
+# totals.
+check_costs() {
+  local ci suite listed
+  ci=$(sed -n 's/^| `.ci\/run` in all[^|]*| \([0-9]*\) |$/\1/p' docs/test-costs.md)
+  suite=$(sed -n 's/^| its tests, ctest -j2, wall clock | \([0-9.]*\) |$/\1/p' docs/test-costs.md)
+  fact README.md "$ci s for .ci/run"
+  fact README.md "$suite s for the tests"
+  listed=$(sed -n 's/^| `\([^`]*\)` | [0-9.]* | [a-z]* |$/\1/p' docs/test-costs.md | sort)
+  if [ "$listed" = "$(ctest --test-dir "$build" -N | sed -n 's/^ *Test *#[0-9]*: //p' | sort)" ]; then
+    echo "ok: docs/test-costs.md has a row for each ctest entry"
+  else
+    fail "docs/test-costs.md does not list the ctest entries of this build (run .ci/run on a clean clone and scripts/test-costs.sh on its log)"
+  fi
 }
 
 # The handout's table of reference images: each row's text is its manifest entry's "shows".

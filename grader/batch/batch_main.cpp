@@ -73,9 +73,9 @@
 #include "report/report.h"  // writeFileAtomically
 #include "sandbox/process.h"
 
-#ifndef A6_DEFAULT_RUBRIC
-#define A6_DEFAULT_RUBRIC ""
-#endif
+namespace a6::paths {
+extern const char rubric[];  // the default rubric (cmake/A6FastBuild.cmake, a6_configured_path)
+}  // namespace a6::paths
 
 namespace fs = std::filesystem;
 using namespace a6::grader;
@@ -776,7 +776,7 @@ std::string lockOutput(const fs::path& out) {
 std::string decidingOptions(const Options& options) {
   std::ostringstream decides;
   const fs::path rubric =
-      options.rubric.empty() ? fs::path(A6_DEFAULT_RUBRIC) : fs::path(options.rubric);
+      options.rubric.empty() ? fs::path(a6::paths::rubric) : fs::path(options.rubric);
   decides << "rubric=" << (rubric.empty() ? std::string("default") : readAll(rubric)) << "\n"
           << "seed=" << (options.seed ? std::to_string(*options.seed) : "default") << "\n"
           << "time-budget="

@@ -32,7 +32,7 @@ set(A6_KIT_JSON ${CMAKE_CURRENT_BINARY_DIR}/kit.json)
 add_library(a6_build STATIC ${CMAKE_CURRENT_SOURCE_DIR}/build/build.cpp)
 target_include_directories(a6_build PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_build PUBLIC a6_sandbox PRIVATE nlohmann_json::nlohmann_json)
-target_compile_definitions(a6_build PRIVATE A6_DEFAULT_KIT_JSON="${A6_KIT_JSON}")
+a6_configured_path(a6_build kit_json "${A6_KIT_JSON}")
 target_compile_options(a6_build PRIVATE ${A6_WARNINGS})
 
 # ---- the kit ----

@@ -41,6 +41,11 @@
 
 #include "sandbox/process.h"
 
+namespace a6::paths {
+extern const char
+    kit_json[];  // BUILD/grader/kit.json (cmake/A6FastBuild.cmake, a6_configured_path)
+}  // namespace a6::paths
+
 namespace a6::grader {
 namespace {
 
@@ -189,13 +194,7 @@ bool endedByTheMachine(const Exit& e, const Limits& limits = defaultCompileLimit
 }
 }  // namespace
 
-fs::path defaultKitPath() {
-#ifdef A6_DEFAULT_KIT_JSON
-  return A6_DEFAULT_KIT_JSON;
-#else
-  return "grader/kit.json";
-#endif
-}
+fs::path defaultKitPath() { return paths::kit_json; }
 
 Limits defaultCompileLimits() {
   Limits l;

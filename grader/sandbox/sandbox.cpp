@@ -38,6 +38,10 @@
 
 #include "sandbox/process.h"
 
+namespace a6::paths {
+extern const char keeper[];  // the a6-keeper program (cmake/A6FastBuild.cmake, a6_configured_path)
+}  // namespace a6::paths
+
 namespace a6::grader {
 
 namespace fs = std::filesystem;
@@ -1004,11 +1008,9 @@ std::string openPipes(int out[2], int status[2]) {
 pid_t forkChild(Plan& plan, std::vector<std::string>& notes) {
   if (plan.root) {
     plan.pidNamespace = true;
-#ifdef A6_KEEPER
-    plan.keeperFd = ::open(A6_KEEPER, O_PATH | O_CLOEXEC);
+    plan.keeperFd = ::open(paths::keeper, O_PATH | O_CLOEXEC);
     plan.keeperEndFd = std::to_string(plan.endFd);
     plan.keeperArgv = {const_cast<char*>("a6-keeper"), plan.keeperEndFd.data(), nullptr};
-#endif
     plan.parent = 1;  // the program's parent: the keeper, init of the namespace
     const long pid = syscall(SYS_clone, CLONE_NEWPID | SIGCHLD, 0, 0, 0, 0);
     if (pid == 0) childMain(plan);

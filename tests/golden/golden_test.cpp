@@ -42,9 +42,9 @@
 #include "harness/task_files.h"
 #include "render/renderer.h"
 
-#ifndef A6_GOLDEN_DIR
-#define A6_GOLDEN_DIR "tests/golden"
-#endif
+namespace a6::paths {
+extern const char golden_dir[];  // tests/golden (cmake/A6FastBuild.cmake, a6_configured_path)
+}  // namespace a6::paths
 
 namespace a6::test {
 namespace {
@@ -53,7 +53,7 @@ using golden::GoldenImage;
 
 // What the command line chose.
 struct Config {
-  std::string manifest = std::string(A6_GOLDEN_DIR) + "/manifest.json";
+  std::string manifest = std::string(a6::paths::golden_dir) + "/manifest.json";
   std::string failures;
   bool showPaths = true;  // false in the grader: its folders are not the student's
   std::set<int> tasks;    // empty: every image

@@ -11,6 +11,10 @@
 #include <filesystem>
 #include <fstream>
 
+namespace a6::paths {
+extern const char golden_dir[];  // tests/golden (cmake/A6FastBuild.cmake, a6_configured_path)
+}  // namespace a6::paths
+
 namespace a6::replay {
 namespace {
 
@@ -100,7 +104,7 @@ Json readJson(const fs::path& file) {
 TEST(Committed, ReferenceReplaysAreTheSolutionsRunsAsTheyAreNow) {
   const char* fresh = std::getenv("A6_FRESH_REPLAYS");
   if (fresh == nullptr) GTEST_SKIP() << "A6_FRESH_REPLAYS names no fresh folder";
-  const fs::path committed = fs::path(A6_GOLDEN_DIR) / "replays";
+  const fs::path committed = fs::path(a6::paths::golden_dir) / "replays";
   int compared = 0;
   for (const auto& e : fs::directory_iterator(fresh)) {
     const fs::path name = e.path().filename();

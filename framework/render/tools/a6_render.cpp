@@ -38,9 +38,9 @@
 #ifndef A6_RENDER_STUDENT
 #define A6_RENDER_STUDENT A6_RENDER_STUDENT_SET
 #endif
-#ifndef A6_GOLDEN_DIR
-#define A6_GOLDEN_DIR "tests/golden"
-#endif
+namespace a6::paths {
+extern const char golden_dir[];  // tests/golden (cmake/A6FastBuild.cmake, a6_configured_path)
+}  // namespace a6::paths
 
 namespace {
 
@@ -62,7 +62,7 @@ struct Options {
   bool goldens = false;
   bool replays = false;  ///< write the reference replays (out: --out, default <goldenDir>/replays)
   bool outGiven = false;
-  std::string goldenDir = A6_GOLDEN_DIR;
+  std::string goldenDir = a6::paths::golden_dir;
   std::vector<std::string> only;
   std::string variant;
 };
