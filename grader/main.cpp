@@ -79,13 +79,15 @@ void addInputOptions(CLI::App& app, Options& all) {
 // How the grading runs.
 void addRunOptions(CLI::App& app, GradeOptions& options) {
   app.add_option("--sandbox-uid", options.sandboxUid,
-                 "as root, run the compiler and the probe as this user id (default: a free uid "
-                 "from 65533 down, claimed for this grading by a lock in /run/lock). Every "
-                 "process of this uid is killed before and after the grading, so never give the "
-                 "uid of an account that runs anything else")
+                 "as root, run the compiler and the probe as this user id (default: a uid drawn "
+                 "at random that has no account and no process, claimed for this grading by a "
+                 "lock in /run/lock). A uid that some process runs as is refused; each "
+                 "sandboxed command runs in a pid namespace of its own, which ends what it "
+                 "started (where the kernel refuses one, the uid's processes are ended after "
+                 "the grading)")
       ->check(CLI::Range(1u, 4294967294u));
   app.add_option("--jobs", options.jobs,
-                 "how many of the six files are compiled at once (default 2; a6_batch gives 1, "
+                 "how many of the seven files are compiled at once (default 2; a6_batch gives 1, "
                  "since it grades several submissions at once)")
       ->check(CLI::Range(1, 64));
   app.add_option("--time-budget", options.timeBudget,
