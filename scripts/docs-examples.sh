@@ -213,10 +213,13 @@ check_facts() {
 # .ci/run): the table has a row for each ctest entry and no other, and README.md quotes its
 # totals.
 check_costs() {
-  local ci suite listed
+  local ci all suite listed
   ci=$(sed -n 's/^| `.ci\/run` in all[^|]*| \([0-9]*\) |$/\1/p' docs/test-costs.md)
   suite=$(sed -n 's/^| its tests, ctest -j2, wall clock | \([0-9.]*\) |$/\1/p' docs/test-costs.md)
+  all=$(sed -n "s/^| the README's test command (scripts\/test.sh: configure, build, tests) | \([0-9]*\) |$/\1/p" \
+    docs/test-costs.md)
   fact README.md "$ci s for .ci/run"
+  fact README.md "$all s for scripts/test.sh"
   fact README.md "$suite s for the tests"
   listed=$(sed -n 's/^| `\([^`]*\)` | [0-9.]* | [a-z]* |$/\1/p' docs/test-costs.md | sort)
   if [ "$listed" = "$(ctest --test-dir "$build" -N | sed -n 's/^ *Test *#[0-9]*: //p' | sort)" ]; then
