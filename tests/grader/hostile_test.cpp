@@ -37,6 +37,7 @@
 
 #include "common/fnv1a.h"
 #include "poisoner.h"
+#include "run_command.h"
 #include "scoring/rubric.h"
 #include "staging.h"
 
@@ -76,20 +77,14 @@ struct Graded {
 
 Graded grade(const fs::path& submission, const fs::path& out, const fs::path& rubric,
              const std::string& extra = "") {
+  const a6::test::CommandRun run = a6::test::runCommand(
+      std::string(A6_GRADE_COMMAND) + " '" + submission.string() + "' --out '" + out.string() +
+      "' --rubric '" + rubric.string() + "' --quiet " + extra);
   Graded g;
   g.out = out;
-  const std::string command = std::string(A6_GRADE_COMMAND) + " '" + submission.string() +
-                              "' --out '" + out.string() + "' --rubric '" + rubric.string() +
-                              "' --quiet " + extra + " 2>&1";
-  const auto start = std::chrono::steady_clock::now();
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return g;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) g.output.append(buffer, n);
-  const int raw = pclose(pipe);
-  g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  g.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  g.status = run.status;
+  g.seconds = run.seconds;
+  g.output = run.output;
   g.results = json::parse(readAll(out / "results.json"), nullptr, false);
   if (g.results.is_discarded()) g.results = nullptr;
   return g;

@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "run_command.h"
 #include "scoring/rubric.h"
 #include "staging.h"
 
@@ -57,40 +58,31 @@ struct Graded {
   json results;
 };
 
-Graded grade(const fs::path& submission, const fs::path& out, const std::string& extra = "") {
+// A grading command's exit status, what it printed and its results.json.
+Graded graded(const std::string& command, const fs::path& out) {
+  const a6::test::CommandRun run = a6::test::runCommand(command);
   Graded g;
-  const std::string command = std::string(A6_GRADE_COMMAND) + " '" + submission.string() +
-                              "' --out '" + out.string() + "' --quiet " + extra + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return g;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) g.output.append(buffer, n);
-  const int raw = pclose(pipe);
-  g.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  g.status = run.status;
+  g.output = run.output;
   g.results = json::parse(readAll(out / "results.json"), nullptr, false);
   return g;
+}
+
+Graded grade(const fs::path& submission, const fs::path& out, const std::string& extra = "") {
+  return graded(std::string(A6_GRADE_COMMAND) + " '" + submission.string() + "' --out '" +
+                    out.string() + "' --quiet " + extra,
+                out);
 }
 
 // The ctest entry's linked grader (a6_graded_<set>, linked_grade_main.cpp): the set's one
 // grading, with the suite's summary per task and its margins on stdout.
 Graded gradeLinked(const fs::path& out) {
-  Graded g;
   const char* program = std::getenv("A6_LINKED_GRADER");
   if (program == nullptr) {
     ADD_FAILURE() << "A6_LINKED_GRADER is not set: run this case through its ctest entry";
-    return g;
+    return {};
   }
-  const std::string command = std::string(program) + " --out '" + out.string() + "' 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return g;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) g.output.append(buffer, n);
-  const int raw = pclose(pipe);
-  g.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  g.results = json::parse(readAll(out / "results.json"), nullptr, false);
-  return g;
+  return graded(std::string(program) + " --out '" + out.string() + "'", out);
 }
 
 // "<key> 1:<a>:<b> 2:..." from the linked grader's output: task -> its fields after the task.
