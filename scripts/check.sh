@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Grades your own work before you submit it, as the grader will: each of the six files compiled on
+# Grades your own work before you submit it, as the grader will: each of the seven files compiled on
 # its own and run in a sandbox, scored by the rubric in grader/rubric.toml, and the same report.
 #
-#   scripts/check.sh [FOLDER]     # FOLDER: your six files (default: starter/)
+#   scripts/check.sh [FOLDER]     # FOLDER: your seven files (default: starter/)
 #
 # Writes out/check/report.html (open it in a browser: every check with its message, your
 # pictures beside the reference images) and out/check/results.json, and prints the summary.
@@ -13,7 +13,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 folder="${1:-$root/starter}"
 out="$root/out/check"
 if [ ! -d "$folder" ]; then
-  echo "check: $folder is not a folder (give the folder that holds your six .cpp files)" >&2
+  echo "check: $folder is not a folder (give the folder that holds your seven .cpp files)" >&2
   exit 2
 fi
 folder="$(cd "$folder" && pwd)"

@@ -2,7 +2,8 @@
 # Installs every package the project needs, on Debian 12 or 13 or Ubuntu 22.04 or 24.04 (it names
 # the platform it found, and stops with a clear message on any other). Idempotent: installs only
 # what is missing, and does nothing (not even `apt-get update`) when everything is there.
-# Run as root (or with sudo).
+# Installing needs root (sudo, or su where there is no sudo); with everything installed, any user
+# may run it (it says so and does nothing).
 set -euo pipefail
 
 # The platform.
@@ -78,7 +79,14 @@ fi
 
 if [ "$(id -u)" -ne 0 ]; then
   echo "install-deps: missing packages: ${missing[*]}" >&2
-  echo "install-deps: run this script as root (or with sudo) to install them" >&2
+  # Named as this machine can run it: with sudo where it is installed, else as root with su.
+  self="$(cd "$(dirname "$0")" && pwd)/$(basename "$0")"
+  if command -v sudo >/dev/null 2>&1; then
+    echo "install-deps: installing needs root: run  sudo bash $self" >&2
+  else
+    echo "install-deps: installing needs root (this system has no sudo): run  su -c 'bash $self'" \
+      "and give root's password; then go on as yourself" >&2
+  fi
   exit 1
 fi
 

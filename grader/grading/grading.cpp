@@ -297,8 +297,9 @@ void Grading::buildWith(Kit& kit) {
   report_.build = buildProbe(kit, report_.intake, work_ / "build", defaultCompileLimits(),
                              std::max(1, options_.jobs), kDefaultBuildBudget);
   // For the TA, not the student's report: what the sandbox could not do, compiles done again.
+  // (Not running as root is said once, in the summary's notes, by the checks' sandbox runs.)
   for (const std::string& note : report_.build.notes) {
-    std::fprintf(stderr, "a6_grade: build: %s\n", note.c_str());
+    if (note != kNotRootNote) std::fprintf(stderr, "a6_grade: build: %s\n", note.c_str());
   }
   // Each task already fell back to the starter where it had to: a probe that still does not
   // link is the kit's fault, not the submission's.
@@ -335,7 +336,11 @@ void Grading::check() {
   ChecksRun run = runChecks(in, rubric_);
   report_.tests = std::move(run.tests);
   for (const std::string& e : run.errors) fail(e);
-  for (std::string& note : run.notes) report_.notes.push_back(std::move(note));
+  for (std::string& note : run.notes) {
+    if (std::find(report_.notes.begin(), report_.notes.end(), note) == report_.notes.end()) {
+      report_.notes.push_back(std::move(note));
+    }
+  }
   report_.probeOutput = std::move(run.probeOutput);
   report_.incidents.crashes = run.incidents.crashes;
   report_.incidents.timeouts = run.incidents.timeouts;

@@ -3,19 +3,18 @@
 #
 #   grader/release/export-student.sh DEST [--zip]
 #
-# DEST (a new or empty folder) receives the framework, the starter, the public tests and their
-# reference images, the handout and the viewer, with:
+# DEST (a new or empty folder) receives the committed files (`git ls-files`) that
+# grader/release/contents.txt lists: the framework, the starter, the public tests and their
+# reference images, the grader for the local check, the student's guides and commands; with:
 #   README.md                        grader/release/README.md (the students' two commands)
 #   grader/rubric.toml               the public rubric (a6_grade --public-rubric: no hidden items)
 #   .github/workflows/classroom.yml  grader/release/classroom.yml (GitHub Classroom)
 #   RELEASE                          the commit it was exported from
-# and never: the solution, the hidden checks (tests/hidden), the hidden images
-# (tests/golden/hidden), the reference replays (tests/golden/replays), the reference force
-# models, the library of known mistakes
-# (grader/mistakes/library), the wrong versions, the grader's own tests,
-# the instructors' scripts and guide. Files are taken from git (`git ls-files`), so nothing
-# untracked or built travels. Last, the export is scanned for solution text (scan-release.sh);
-# a hit removes nothing silently: the export fails and names the file and line.
+# Nothing untracked or built travels. The graders' material (the solution, the hidden checks and
+# images, the reference replays and force models, the known mistakes, the wrong versions, the
+# grader's tests, the instructors' guide) fails the export if the list brings it in; last, the
+# export is scanned for solution text (scan-release.sh): a hit fails the export, naming the file
+# and line.
 #
 # --zip also writes DEST.zip (for the course page). A6_GRADE names the a6_grade binary that writes
 # the public rubric (default: build/grader/a6_grade, built if missing).
@@ -27,7 +26,7 @@ dest="" zip=0
 for arg in "$@"; do
   case "$arg" in
     --zip) zip=1 ;;
-    -h | --help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "export-student: unknown option $arg" >&2; exit 2 ;;
     *) [ -z "$dest" ] || { echo "export-student: one DEST only" >&2; exit 2; }; dest="$arg" ;;
   esac
@@ -43,34 +42,25 @@ top=$(git -C "$root" rev-parse --show-toplevel 2>/dev/null) ||
 [ "$(cd "$top" && pwd -P)" = "$(cd "$root" && pwd -P)" ] ||
   { echo "export-student: $root is not a git checkout itself but lies inside $top (the release is taken from git)" >&2; exit 1; }
 
-# The graders' material, and what only instructors use: never exported. A path ending in / is a
-# folder.
-excluded=(
-  solution/                          # the solution
-  tests/hidden/                      # hidden checks (random inputs)
-  tests/golden/hidden/               # hidden reference images
-  tests/golden/replays/              # the reference runs the grader's report replays
-  tests/support/reference_models.inc # the reference force models (tasks 1 and 2 solved)
-  tests/wrong/ tests/alternative/    # solution variants
-  tests/grader/ tests/bench/ tests/release/ tests/packaging/   # use the solution
-  tests/format/                      # our own layout rule, not the students'
-  tests/render/                      # the renderer's own tests: their sample cloth lists every
-                                     # spring (task 4 solved), and students need not test it
-  grader/release/ grader/gradescope/ # the export tools and the autograder package
-  grader/mistakes/library/           # the known mistakes and the tasks' reference answers
-  grader/rubric.toml README.md       # replaced below
-  docs/instructor.md                 # the graders' guide
-  scripts/main.sh scripts/bench-grader.sh scripts/gradescope-package.sh
-  .ci/
-)
-is_excluded() {
-  local path="$1" x
-  for x in "${excluded[@]}"; do
-    if [[ "$x" == */ ]]; then [[ "$path" == "$x"* ]] && return 0
-    else [[ "$path" == "$x" ]] && return 0; fi
-  done
-  return 1
+# What the release holds: grader/release/contents.txt (folders end in /, "!" takes out).
+mapfile -t entries < <(sed -e 's/#.*//' -e 's/[[:space:]]*$//' "$here/contents.txt" | grep -v '^$')
+matches() {  # matches ENTRY PATH: the entry (without its "!") names the path or a folder above it
+  local entry="$1" path="$2"
+  if [[ "$entry" == */ ]]; then [[ "$path" == "$entry"* ]]; else [[ "$path" == "$entry" ]]; fi
 }
+in_release() {  # the last entry that matches a path decides
+  local path="$1" entry verdict=1
+  for entry in "${entries[@]}"; do
+    if [[ "$entry" == '!'* ]]; then matches "${entry#!}" "$path" && verdict=1
+    else matches "$entry" "$path" && verdict=0; fi
+  done
+  return "$verdict"
+}
+# The graders' material: never released, whatever contents.txt says (a wrong entry there fails
+# the export instead of shipping it).
+never=(solution/ tests/hidden/ tests/golden/hidden/ tests/golden/replays/
+       tests/support/reference_models.inc tests/wrong/ tests/alternative/ tests/grader/
+       grader/mistakes/library/ docs/instructor.md .ci/)
 
 # The public rubric, from the graders' rubric.
 grade="${A6_GRADE:-$root/build/grader/a6_grade}"
@@ -86,7 +76,13 @@ dest="$(cd "$dest" && pwd)"
 
 count=0
 while IFS= read -r -d '' path; do
-  is_excluded "$path" && continue
+  in_release "$path" || continue
+  for x in "${never[@]}"; do
+    if matches "$x" "$path"; then
+      echo "export-student: grader/release/contents.txt brings in $path, graders' material" >&2
+      exit 1
+    fi
+  done
   [ -e "$root/$path" ] || continue  # deleted in the working tree, not yet committed
   mkdir -p "$dest/$(dirname "$path")"
   cp -p "$root/$path" "$dest/$path"

@@ -696,20 +696,10 @@ std::vector<fs::path> hidesOf(const SandboxSpec& spec, const std::vector<fs::pat
   return hides;
 }
 
-// The note for paths a non-root grader cannot hide; the first eight by name.
-std::string unhiddenNote(const std::vector<std::string>& unreadable) {
-  std::string note =
-      "not running as root, so these paths cannot be hidden and only file "
-      "permissions protect them:";
-  for (std::size_t k = 0; k < unreadable.size() && k < 8; ++k) note += " " + unreadable[k];
-  if (unreadable.size() > 8) note += " and " + std::to_string(unreadable.size() - 8) + " more";
-  return note;
-}
-
 // One hide operation per existing path (as root); returns the paths hidden.
 std::vector<fs::path> planHides(const std::vector<fs::path>& hides, Plan& plan) {
   std::vector<fs::path> hidden;
-  std::vector<std::string> unreadable;
+  bool unhidden = false;
   for (const fs::path& path : hides) {
     struct stat st;
     if (lstat(path.c_str(), &st) != 0) continue;  // nothing to hide
@@ -718,9 +708,7 @@ std::vector<fs::path> planHides(const std::vector<fs::path>& hides, Plan& plan) 
       continue;
     }
     if (!plan.root) {
-      unreadable.push_back(path.string() + ((st.st_mode & S_IROTH) != 0
-                                                ? " (readable by every user: chmod -R o-rwx it)"
-                                                : ""));
+      unhidden = true;
       continue;
     }
     MountOp op;
@@ -730,7 +718,7 @@ std::vector<fs::path> planHides(const std::vector<fs::path>& hides, Plan& plan) 
     plan.ops.push_back(op);
     hidden.push_back(path);
   }
-  if (!unreadable.empty()) plan.notes.push_back(unhiddenNote(unreadable));
+  if (unhidden) plan.notes.push_back(kNotRootNote);
   return hidden;
 }
 

@@ -57,6 +57,13 @@ struct Limits {
   int openFiles = 64;                   ///< RLIMIT_NOFILE
 };
 
+/// The note of a sandbox run by a user other than root (a student's local check): it cannot hide
+/// files or switch users, so the code ran as that user and saw what that user sees. One fixed
+/// text, so that a grading's many sandbox runs say it once.
+inline constexpr const char* kNotRootNote =
+    "not running as root, so the code ran as this user and saw the files the graders' run hides "
+    "(run as root, the grader hides them and runs the code as a user of its own)";
+
 /// How a sandboxed process ended.
 struct Exit {
   enum class Kind { Exited, Signaled, TimedOut, FailedToStart } kind = Kind::Exited;

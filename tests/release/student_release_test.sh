@@ -17,15 +17,48 @@
 set -uo pipefail
 root="$1" grade="$2" work="$3"
 rm -rf "$work"
-# In a folder of mode 0700, as a student's home folder is: the local check's sandbox user must
-# still reach what it needs.
-mkdir -p "$work/home"
-chmod 0700 "$work/home"
-release="$work/home/release"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 pass() { echo "ok:   $*"; }
 start=$(date +%s)
+
+# The student: a user of their own, not root (a uid with no account and no process here), whose
+# home folder (mode 0700) holds the release. Run as root (CI), the student's steps below run as
+# that user; run as a normal user, they run as that user, whoever it is.
+as_student() { "$@"; }
+home="$work/home"
+if [ "$(id -u)" -eq 0 ]; then
+  student=""
+  for uid in $(seq 4100 4199); do
+    getent passwd "$uid" >/dev/null || pgrep -U "$uid" >/dev/null || { student=$uid; break; }
+  done
+  [ -n "$student" ] || { echo "FAIL: no free uid in 4100..4199 for the student"; exit 1; }
+  # The student's home must be reachable by that user: under the build folder when its parents
+  # let every user through, else (a checkout in root's home, mode 0700) a folder in /tmp.
+  mkdir -p "$work"
+  if ! setpriv --reuid="$student" --regid="$student" --clear-groups test -x "$work"; then
+    home=$(mktemp -d /tmp/a6-student-home.XXXXXX)
+    trap 'rm -rf "$home"' EXIT
+  fi
+  # The student's compiler cache: the machine's, like root's own (~/.cache/ccache), in a folder
+  # only that uid owns, so that a second run here compiles what changed, not the release again
+  # (scripts/bench-first-hour.sh times a fresh account's first check, with an empty cache).
+  cache="/var/tmp/a6-student-ccache-$student"
+  if [ ! -e "$cache" ] && [ ! -L "$cache" ]; then
+    mkdir -m 0700 "$cache" && chown "$student:$student" "$cache"
+  fi
+  if [ -L "$cache" ] || [ ! -d "$cache" ] || [ "$(stat -c %u "$cache")" != "$student" ]; then
+    cache="$home/.cache/ccache"  # another's folder, or a link: never used
+  fi
+  as_student() {
+    setpriv --reuid="$student" --regid="$student" --clear-groups \
+      env CCACHE_DIR="$cache" HOME="$home" USER=student LOGNAME=student "$@"
+  }
+fi
+mkdir -p "$home"
+chmod 0700 "$home"
+release="$home/release"
+give_student() { [ -z "${student:-}" ] || chown -R "$student:$student" "$@"; }
 
 # 1. Export.
 if ! A6_GRADE="$grade" bash "$root/grader/release/export-student.sh" "$release" >"$work/export.log" 2>&1; then
@@ -34,6 +67,8 @@ if ! A6_GRADE="$grade" bash "$root/grader/release/export-student.sh" "$release" 
   exit 1
 fi
 pass "exported: $(tail -1 "$work/export.log")"
+# Unzipped by the student: their files.
+give_student "$home"
 
 # 2. Contents.
 for absent in solution tests/hidden tests/golden/hidden tests/golden/replays \
@@ -57,6 +92,53 @@ public_pngs=$(ls "$root"/tests/golden/*.png | wc -l)
 grep -q 'Hidden' "$release/grader/rubric.toml" && fail "the release's rubric names hidden checks"
 grep -q '^total = 87' "$release/grader/rubric.toml" || fail "the public rubric's total is not 87"
 pass "contents: 7 starter files, $pngs reference images, public rubric"
+
+# Exactly the list in the instructor guide ("The student release"): each committed file its
+# entries select, and the four the export writes; nothing else, and no entry that selects nothing.
+before=$failures
+listed=$(awk '/<!-- release-contents/ { on = 1; next } on && /^```/ { if (++fences == 2) exit; next }
+              on && fences == 1' "$root/docs/instructor.md" | sed 's/#.*//' | tr -s ' \t' '\n\n' |
+         grep .)
+[ "$(echo "$listed" | wc -l)" -gt 20 ] || fail "the instructor guide's release list is missing"
+selects() {  # selects ENTRY PATH
+  case "$1" in */) [[ "$2" == "$1"* ]] ;; *) [ "$2" = "$1" ] ;; esac
+}
+git -C "$root" ls-files >"$work/committed"
+for extra in README.md grader/rubric.toml .github/workflows/classroom.yml RELEASE; do
+  echo "$extra" >>"$work/committed"
+done
+: >"$work/expected"
+while IFS= read -r path; do
+  verdict=no
+  while IFS= read -r entry; do
+    case "$entry" in '!'*) selects "${entry#!}" "$path" && verdict=no ;;
+                     *) selects "$entry" "$path" && verdict=yes ;; esac
+  done <<<"$listed"
+  [ "$verdict" = yes ] && echo "$path" >>"$work/expected"
+done <"$work/committed"
+sort -u -o "$work/expected" "$work/expected"
+(cd "$release" && find . -type f | sed 's|^\./||' | sort) >"$work/released"
+while IFS= read -r path; do fail "$path is in the release but not in the guide's list"
+done < <(comm -13 "$work/expected" "$work/released")
+while IFS= read -r path; do fail "$path is in the guide's list but not in the release"
+done < <(comm -23 "$work/expected" "$work/released")
+while IFS= read -r entry; do
+  grep -q . < <(while IFS= read -r path; do selects "${entry#!}" "$path" && echo "$path"; done \
+                  <"$work/committed") || fail "the guide's release entry $entry selects no file"
+done <<<"$listed"
+[ "$failures" -eq "$before" ] &&
+  pass "the release's $(wc -l <"$work/released") files are the instructor guide's list"
+
+# No link to a guide or command the release lacks: the .md and .sh files its guides, workflow and
+# container name.
+before=$failures
+while IFS=: read -r file target; do
+  [ -e "$release/$target" ] || fail "$file names $target, which the release lacks"
+done < <(cd "$release" && grep -roE --include='*.md' --include='*.yml' --include='*.json' \
+           '(docs|scripts|grader|tests|framework|starter|cmake)/[A-Za-z0-9_./-]*\.(md|sh)\b' . |
+         sed 's|^\./||' | sort -u)
+[ "$failures" -eq "$before" ] &&
+  pass "every guide and command the release's guides, workflow and container name is in it"
 
 # The scan, written differently from scan-release.sh: the solution's statements (lines ending in
 # ';', 25+ characters, not comments; loop and block headers such as "for (int j = 0; j <= n; ++j) {"
@@ -86,7 +168,7 @@ echo "$readme_commands" | grep -q 'scripts/install-deps.sh && scripts/check.sh' 
 echo "$readme_commands" | grep -q '^scripts/test.sh' || fail "README's second command is not scripts/test.sh"
 bash scripts/install-deps.sh >"$work/install.log" 2>&1 || { cat "$work/install.log"; fail "install-deps failed"; }
 build_start=$(date +%s)
-bash scripts/test.sh >"$work/test.log" 2>&1
+as_student bash scripts/test.sh >"$work/test.log" 2>&1
 test_status=$?
 echo "      scripts/test.sh: exit $test_status after $(( $(date +%s) - build_start )) s"
 if ! grep -q 'Build files have been written' "$work/test.log" || ! grep -q 'tests passed' "$work/test.log"; then
@@ -106,6 +188,13 @@ else
     [ "${failed:-0}" -gt 0 ] || fail "task $t: no failing test on the starter ($summary)"
   done
   [ "$(grep -c 'look here' "$work/test.log")" -ge 7 ] || fail "the summary does not point at every task"
+  # The README shows this summary as the student will see it.
+  sed -n '/^Summary by task$/,/^A6-SUMMARY/p' "$work/test.log" | grep -B8 -Fx "$summary" |
+    sed -n '/^Summary by task$/,$p' | sed '$d' >"$work/summary_seen"
+  awk '/<!-- example: student-summary -->/ { on = 1; next } on && /^```/ { if (++fences == 2) exit; next }
+       on && fences == 1' README.md >"$work/summary_shown"
+  diff -u "$work/summary_shown" "$work/summary_seen" >"$work/summary.diff" ||
+    { cat "$work/summary.diff"; fail "the README's summary (-) is not what scripts/test.sh printed (+)"; }
   pass "scripts/test.sh fails clearly on the starter: $summary"
 fi
 grep -q 'Failed.*physics' "$work/test.log" || grep -q 'physics.*Failed' "$work/test.log" ||
@@ -114,42 +203,51 @@ grep -q 'Failed.*physics' "$work/test.log" || grep -q 'physics.*Failed' "$work/t
 # The starter files' "Done when" commands: `ctest -R Task1` (the README's form: with the preset)
 # runs task 1's checks, only those, and fails on the starter, printing at most 200 lines; the
 # same from the build folder; a pattern that matches no test fails too.
-ctest --preset default -R Task1 --output-on-failure >"$work/task1.log" 2>&1 &&
+as_student ctest --preset default -R Task1 --output-on-failure >"$work/task1.log" 2>&1 &&
   fail "ctest --preset default -R Task1 passed on the starter"
 grep -q 'Task1Spring\.' "$work/task1.log" || fail "ctest -R Task1 ran no task-1 check"
 ! grep -q 'Task2Forces\.' "$work/task1.log" || fail "ctest -R Task1 ran task 2's checks too"
 [ "$(wc -l <"$work/task1.log")" -le 230 ] ||
   fail "ctest -R Task1 printed $(wc -l <"$work/task1.log") lines on the starter"
-(cd build && ctest -R Task1 >"$work/task1_in_build.log" 2>&1) &&
+(cd build && as_student ctest -R Task1 >"$work/task1_in_build.log" 2>&1) &&
   fail "ctest -R Task1 in build/ passed on the starter"
 grep -q 'Task1 .*Failed' "$work/task1_in_build.log" || fail "ctest -R Task1 in build/ ran no Task1"
-ctest --preset default -R NoSuchTest >"$work/none.log" 2>&1 &&
-  fail "ctest --preset default -R NoSuchTest passed: a run that matches no test must fail"
+# The README's own example of a pattern that matches no test.
+nomatch=$(sed -n 's/.*a pattern that matches no test (`-R \([A-Za-z0-9]*\)`.*/\1/p' README.md)
+[ -n "$nomatch" ] || fail "the README names no pattern that matches no test"
+as_student ctest --preset default -R "${nomatch:-NoSuchTest}" >"$work/none.log" 2>&1 &&
+  fail "ctest --preset default -R ${nomatch:-NoSuchTest} passed: a run that matches no test must fail"
 pass "ctest -R Task1 runs task 1's checks and fails on the starter; no match fails"
 
 # 4. The local check.
 score_of() { grep -m1 '"score"' "$1" | tr -dc '0-9.'; }
-bash scripts/check.sh >"$work/check_starter.log" 2>&1 || { cat "$work/check_starter.log"; fail "scripts/check.sh failed on the starter"; }
+as_student bash scripts/check.sh >"$work/check_starter.log" 2>&1 || { cat "$work/check_starter.log"; fail "scripts/check.sh failed on the starter"; }
 [ -s out/check/report.html ] || fail "no out/check/report.html"
 [ "$(score_of out/check/results.json)" = "0.0" ] ||
   fail "the starter scored $(score_of out/check/results.json) in the local check"
 grep -q 'total *0.00 / 87.00' "$work/check_starter.log" || fail "check.sh's summary does not say 0 / 87"
-pass "scripts/check.sh on the starter: 0 / 87, report.html written"
+# As a normal user, one line says the code ran without the grader's sandbox, with no advice.
+unsandboxed=$(grep -c 'not running as root' "$work/check_starter.log")
+[ "$unsandboxed" -le 1 ] || fail "check.sh printed $unsandboxed lines about not running as root"
+! grep -q 'chmod' "$work/check_starter.log" || fail "check.sh advises a chmod"
+pass "scripts/check.sh on the starter: 0 / 87, report.html written, $unsandboxed line on root"
 
-mkdir -p "$work/finished"
-cp "$root"/solution/*.cpp "$work/finished/"
-bash scripts/check.sh "$work/finished" >"$work/check_solution.log" 2>&1
+mkdir -p "$home/finished"
+cp "$root"/solution/*.cpp "$home/finished/"
+give_student "$home/finished"
+as_student bash scripts/check.sh "$home/finished" >"$work/check_solution.log" 2>&1
 grep -q 'total *87.00 / 87.00 *+13.00 extra credit' "$work/check_solution.log" ||
   { tail -5 "$work/check_solution.log"; fail "a finished submission does not get 87 / 87 + 13 in the local check"; }
 pass "scripts/check.sh on a finished submission: $(grep -m1 'total ' "$work/check_solution.log" | tr -s ' ')"
 
 # A wrong cloth: the local check and the graders' a6_grade agree item by item on the public items.
-mkdir -p "$work/wrong"
-cp "$root"/solution/*.cpp "$work/wrong/"
-cp "$root"/tests/wrong/t4_shear_with_structural_rest_length/cloth.cpp "$work/wrong/"
-bash scripts/check.sh "$work/wrong" >"$work/check_wrong.log" 2>&1
+mkdir -p "$home/wrong"
+cp "$root"/solution/*.cpp "$home/wrong/"
+cp "$root"/tests/wrong/t4_shear_with_structural_rest_length/cloth.cpp "$home/wrong/"
+give_student "$home/wrong"
+as_student bash scripts/check.sh "$home/wrong" >"$work/check_wrong.log" 2>&1
 cp out/check/results.json "$work/local.json"
-"$grade" "$work/wrong" --out "$work/graders" --quiet >"$work/graders.log" 2>&1
+"$grade" "$home/wrong" --out "$work/graders" --quiet >"$work/graders.log" 2>&1
 # The score of the results.json test whose name starts with "$2 (" (a6_grade writes one field
 # per line; the name comes before the score).
 item_score() {

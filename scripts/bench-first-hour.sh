@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# A student's first hour, timed as they live it: the release, unzipped by a user of their own
+# (not root) in their home folder, with an empty compiler cache.
+#
+#   scripts/bench-first-hour.sh [--runs N]     (run as root; default 3 runs of the loop)
+#
+# Exports the student release (grader/release/export-student.sh) into the home folder (mode 0700)
+# of a uid with no account and no process, then times, as that user:
+#   (1) the README's first command after install-deps: scripts/check.sh on the starter (the
+#       build of the grader from nothing, then the grading);
+#   (2) scripts/check.sh again, nothing changed;
+#   (3) the loop: a change to starter/spring.cpp, then `ctest --preset default -R Task1`
+#       (the median of N runs), after one `scripts/test.sh` that builds the rest.
+# Targets (issue 32): (1) at most 3 minutes, (2) at most 10 s, (3) at most 2 s. Prints each
+# figure, and the lines check.sh printed about running without the grader's sandbox.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+
+runs=3
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --runs) runs=$2; shift ;;
+    -h | --help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "bench-first-hour: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+  shift
+done
+[ "$(id -u)" -eq 0 ] || { echo "bench-first-hour: run as root (it makes the student's user)" >&2; exit 2; }
+
+student=""
+for uid in $(seq 4200 4299); do
+  getent passwd "$uid" >/dev/null || pgrep -U "$uid" >/dev/null || { student=$uid; break; }
+done
+[ -n "$student" ] || { echo "bench-first-hour: no free uid in 4200..4299" >&2; exit 1; }
+home=$(mktemp -d /tmp/a6-first-hour.XXXXXX)
+trap 'rm -rf "$home"' EXIT
+chmod 0700 "$home"
+as_student() {
+  (cd "$home/release" && setpriv --reuid="$student" --regid="$student" --clear-groups \
+    env CCACHE_DIR="$home/.cache/ccache" HOME="$home" USER=student LOGNAME=student "$@")
+}
+# seconds LOG COMMAND...: the wall time of one run as the student, its output in LOG.
+seconds() {
+  local log=$1 start end
+  shift
+  start=$(date +%s.%N)
+  as_student "$@" >"$log" 2>&1 || true
+  end=$(date +%s.%N)
+  awk -v a="$start" -v b="$end" 'BEGIN { print b - a }'
+}
+median() { sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+
+echo "bench-first-hour: exporting the release into $home (uid $student, not timed)"
+grader/release/export-student.sh "$home/release" >"$home/export.log" 2>&1 ||
+  { cat "$home/export.log"; exit 1; }
+chown -R "$student:$student" "$home"
+bash "$home/release/scripts/install-deps.sh" >/dev/null  # root's step; nothing to install here
+
+first=$(seconds "$home/check1.log" bash scripts/check.sh)
+grep -q 'total ' "$home/check1.log" || { tail -20 "$home/check1.log"; exit 1; }
+second=$(seconds "$home/check2.log" bash scripts/check.sh)
+echo "bench-first-hour: scripts/test.sh once, for the loop (not timed)"
+as_student bash scripts/test.sh >"$home/test.log" 2>&1 || true
+loop=$(for k in $(seq "$runs"); do
+  as_student sh -c "printf '\nstatic int edit$k() { return $k; }\n' >>starter/spring.cpp"
+  seconds "$home/loop.log" ctest --preset default -R Task1
+done | median)
+
+printf 'bench-first-hour: first scripts/check.sh  %6.1f s  (target 180 s)\n' "$first"
+printf 'bench-first-hour: second scripts/check.sh %6.1f s  (target 10 s)\n' "$second"
+printf 'bench-first-hour: the loop (median of %d)  %6.1f s  (target 2 s)\n' "$runs" "$loop"
+echo "bench-first-hour: what check.sh said about running without the sandbox:"
+grep -i 'root' "$home/check1.log" | sed 's/^/  /' || echo "  (nothing)"
