@@ -204,7 +204,10 @@ check_facts() {
   fact README.md "then runs the $tests tests"
   fact README.md "apt-get: the $(bash scripts/install-deps.sh | sed -n 's/.*all \([0-9]*\) packages.*/\1/p') packages it names"
   fact README.md "\`out/$(sed -n 's|.*export-student.sh out/\([a-z-]*\) --zip.*|\1|p' scripts/main.sh).zip\`"
-  fact README.md "\`unzip $(sed -n 's|.*export-student.sh out/\([a-z-]*\) --zip.*|\1|p' scripts/main.sh).zip && cd"
+  local release
+  release=$(sed -n 's|.*export-student.sh out/\([a-z-]*\) --zip.*|\1|p' scripts/main.sh)
+  fact README.md "\`unzip $release.zip && cd"
+  fact grader/release/README.md "\`unzip $release.zip && cd $release\`"
   fact README.md "the quick tier, its $(ctest --test-dir "$build" -N -L quick | sed -n 's/^Total Tests: //p') tests"
   fact docs/instructor.md "the $images public images"
   fact docs/instructor.md "the $hidden_images hidden ones"

@@ -126,6 +126,7 @@ class Grading {
   // The stages after the build, against code linked into this program (GradeOptions::linked).
   int runLinked() {
     report_.seed = options_.seed.value_or(1);
+    report_.linked = true;
     prepareWork();
     if (const std::optional<int> stopped = registerChecks()) return *stopped;
     check();

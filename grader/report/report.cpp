@@ -584,6 +584,11 @@ void htmlScoreTable(std::ostringstream& out, const GradeReport& report) {
 // The submission: each task file's graded copy and build, the intake's notes, the compiler's
 // messages (open where a task uses the starter's stub).
 void htmlSubmission(std::ostringstream& out, const GradeReport& report) {
+  if (report.linked) {
+    out << "<h2>Submission</h2>\n<p>The task files were compiled into the grading program "
+        << "itself (a test's in-process grading): no copy, no sandboxed build.</p>\n";
+    return;
+  }
   out << "<h2>Submission</h2>\n<table><tr><th>task file</th><th>graded copy</th>"
       << "<th>build</th></tr>\n";
   for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {

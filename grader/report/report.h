@@ -61,6 +61,9 @@ struct GradeReport {
   std::filesystem::path rubricFile;
   Intake intake;
   Build build;
+  /// The files were linked into the grading program (GradeOptions::linked, the tests' in-process
+  /// gradings): no intake, no build, so the report says that instead of "not found".
+  bool linked = false;
   std::vector<TestOutcome> tests;
   std::vector<ScoredItem> items;
   /// The known mistakes the answers of failing tasks matched (grader/mistakes/), in task order:

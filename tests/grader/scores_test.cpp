@@ -403,6 +403,9 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
   expectMistakeNamed(g, name, failing);
   const std::string html = expectReplays(dir / "out", false);
   std::printf("[ replays  ] %s: report.html %zu bytes\n", name.c_str(), html.size());
+  // Linked, the files were never looked for: the report says so, not "not found".
+  EXPECT_NE(html.find("compiled into the grading program"), std::string::npos);
+  EXPECT_EQ(html.find("not found"), std::string::npos);
   // A wrong stepper's failed checks are replayed beside the reference stepper.
   if (failing.count(3) != 0) {
     EXPECT_NE(html.find("id=\"replay-Task3"), std::string::npos);

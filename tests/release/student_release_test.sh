@@ -1,21 +1,25 @@
 #!/usr/bin/env bash
 # The student release, end to end (ctest release_student, label "packaging"):
 #
-#   student_release_test.sh ROOT A6_GRADE WORK
+#   student_release_test.sh ROOT A6_GRADE WORK [GRADED_CLOTH]
 #
-#  1. exports it (grader/release/export-student.sh) into WORK/home/release (WORK/home: mode 0700);
-#  2. checks what is in it and what is not, and scans it for solution text on its own terms
-#     (every line of solution/*.cpp of 25+ characters that the starter does not have);
+#  1. exports it (grader/release/export-student.sh) into the student's home folder (mode 0700,
+#     WORK/home, or a folder in /tmp when the checkout's folders let no other user through),
+#     owned by the student: run as root, a user of their own (below) runs steps 3 and 4;
+#  2. checks what is in it against the instructor guide's list and what is not, that every guide
+#     and command it names is in it, and scans it for solution text on its own terms (every line
+#     of solution/*.cpp of 25+ characters that the starter does not have);
 #  3. follows its README from scratch: scripts/install-deps.sh (nothing to install here), then
 #     the test command, scripts/test.sh, which must build and then fail clearly on the starter:
-#     every task's physics tests fail, the summary says where to look;
+#     every task's physics tests fail, the summary says where to look and is the README's;
 #  4. runs scripts/check.sh (the local check): the starter gets 0 of the public points, a
 #     finished solution all of them, and a wrong cloth the same score per public rubric item as
-#     the graders' a6_grade gives it;
+#     the graders' grading gives it (GRADED_CLOTH: its results.json from the fairness test
+#     wrong_t4_shear_with_structural_rest_length; without it, a6_grade grades the cloth here);
 #  5. runs the commands of the GitHub Classroom workflow: they exist and the task steps fail on
 #     the starter.
 set -uo pipefail
-root="$1" grade="$2" work="$3"
+root="$1" grade="$2" work="$3" graded_cloth="${4:-}"
 rm -rf "$work"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
@@ -247,7 +251,13 @@ cp "$root"/tests/wrong/t4_shear_with_structural_rest_length/cloth.cpp "$home/wro
 give_student "$home/wrong"
 as_student bash scripts/check.sh "$home/wrong" >"$work/check_wrong.log" 2>&1
 cp out/check/results.json "$work/local.json"
-"$grade" "$home/wrong" --out "$work/graders" --quiet >"$work/graders.log" 2>&1
+# The graders' grading of the same files: the one the fairness tests made (wrong_<name>), or
+# a6_grade's here when the test runs without it.
+if [ -f "$graded_cloth" ]; then
+  mkdir -p "$work/graders" && cp "$graded_cloth" "$work/graders/results.json"
+else
+  "$grade" "$home/wrong" --out "$work/graders" --quiet >"$work/graders.log" 2>&1
+fi
 # The score of the results.json test whose name starts with "$2 (" (a6_grade writes one field
 # per line; the name comes before the score).
 item_score() {
