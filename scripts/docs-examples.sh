@@ -202,6 +202,18 @@ check_facts() {
   "$grade" --public-rubric "$scratch/public.toml"
   public_total=$(sed -n 's/^total = \([0-9]*\)\(\.0*\)\{0,1\}$/\1/p' "$scratch/public.toml")
   fact README.md "then runs the $tests tests"
+  # A full score or an image count the README states anywhere is today's: "solution N" is the
+  # rubric's points plus its extra credit; "N + M images" the public and the hidden images.
+  local full stated
+  full=$("$grade" --check-rubric 2>&1 | sed -n 's/.*, \([0-9]*\) points + \([0-9]*\) extra credit.*/\1 + \2/p')
+  full=$((full))
+  for stated in $(grep -oE 'solution [0-9]+\b' README.md | awk '{ print $2 }' | sort -u); do
+    [ "$stated" = "$full" ] || fail "README.md says \"solution $stated\": the solution's score is $full"
+  done
+  for stated in $(grep -oE '\b[0-9]+ \+ [0-9]+ images' README.md | tr -d ' ' | sort -u); do
+    [ "$stated" = "$images+${hidden_images}images" ] ||
+      fail "README.md says \"$stated\": there are $images public and $hidden_images hidden images"
+  done
   fact README.md "apt-get: the $(bash scripts/install-deps.sh | sed -n 's/.*all \([0-9]*\) packages.*/\1/p') packages it names"
   fact README.md "\`out/$(sed -n 's|.*export-student.sh out/\([a-z-]*\) --zip.*|\1|p' scripts/main.sh).zip\`"
   local release
