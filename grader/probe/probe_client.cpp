@@ -493,6 +493,16 @@ struct ProbeClient::Impl {
     return {};
   }
 
+  // A probe that ended just after it started: its crash report, once it is dead (300 ms at
+  // most); no fault while it still runs.
+  Outcome endedAtStart() {
+    const auto until = Clock::now() + std::chrono::milliseconds(300);
+    while (process->alive() && Clock::now() < until) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return process->alive() ? Outcome{} : crashReport();
+  }
+
   // A probe just started: it must answer a request that runs no student code, and then show,
   // in /proc, its seccomp filter on top of the sandbox's and a single thread
   // (grader/probe/filter.h). Returns why it cannot serve, or no fault.
@@ -508,6 +518,11 @@ struct ProbeClient::Impl {
     const bool filtered =
         info && info->seccompMode == 2 && (info->seccompFilters < 0 || info->seccompFilters >= 2);
     if (info && filtered && info->threads == 1) return {};
+    // Gone between its answer and this look (a crash, or a kill from outside): how it ended
+    // says whose it is (crashReport), not a bad start.
+    if (!info || info->state == 'Z') {
+      if (Outcome ended = endedAtStart(); !ended.ok()) return ended;
+    }
     const std::string what =
         !info       ? "it could not be inspected"
         : !filtered ? "it runs without its seccomp filter"
