@@ -4,6 +4,7 @@
 //
 // The steps set referenceForces, so a bug in task 1 or 2 never fails these checks; the Jacobians
 // are your own (task 7's).
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -151,9 +152,10 @@ struct KnownSpring {
 
 std::vector<KnownSpring> knownSprings() {
   // The damped spring: e = (0.6, 0.8); p2 moving along e at 1 m/s adds -kd e = (-1.8, -2.4),
-  // across e nothing.
+  // across e nothing. No spring is 1 m long: there d = e, and a force that uses d for e is right
+  // at the spring but not in its derivatives (task 1's mistake, not task 7's).
   return {{springOf(Vec2(0, 0), Vec2(1.5, 0), 1.0, 100), Vec2(-50, 0)},
-          {springOf(Vec2(1, 1), Vec2(1.6, 1.8), 0.5, 40), Vec2(-12, -16)},
+          {springOf(Vec2(1, 1), Vec2(1.9, 2.2), 0.5, 40), Vec2(-24, -32)},
           {springOf(Vec2(0, 0), Vec2(0, 0.5), 1.0, 10), Vec2(0, 5)},
           {springOf(Vec2(2, -1), Vec2(2.3, -0.6), 1.0, 20, 3, Vec2(1, 2), Vec2(1, 2)),
            Vec2(6, 8),
@@ -417,6 +419,140 @@ TEST(Task7Implicit, PinnedParticlesStay) {
                       "v after step " + std::to_string(k + 1) + "; " + input(r));
   }
   inputs.report(hint("a pinned particle never moves: skip it when you apply Δv and x += v h"));
+}
+
+// --- Laws of the step on a free system -----------------------------------------------------------
+
+// Three particles of different masses, moving, on three springs that are stretched or compressed
+// and turned away from the axes; no pins, gravity or drag: only the springs' internal forces.
+SimulateRequest freeTriangle(double kd, double dt, int frames) {
+  return implicitRequest(
+      {body(Vec2(0, 0), Vec2(0.4, -0.3), 0.6), body(Vec2(0.9, 0.3), Vec2(-0.2, 0.5), 1.5),
+       body(Vec2(0.2, 0.8), Vec2(0.3, 0.1), 1.0)},
+      {springData(0, 1, 0.8, 60, kd), springData(1, 2, 0.9, 45, kd), springData(2, 0, 0.7, 80, kd)},
+      dt, frames);
+}
+
+Vec2 momentumOf(const std::vector<Particle>& ps) {
+  Vec2 p = Vec2::Zero();
+  for (const Particle& q : ps) p += q.m * q.v;
+  return p;
+}
+
+TEST(Task7Implicit, AFreeSystemKeepsItsMomentum) {
+  // Each spring adds -K to the blocks (i, i) and (j, j) and +K to (i, j) and (j, i), and to b
+  // +h² dfdx (v_j - v_i) at j and the opposite at i: so Σ m Δv = h Σ f = 0, the linear momentum
+  // stays to round-off, and the centre of mass moves in a straight line (x_cm += h P / M at each
+  // step, exactly). The springs are damped and the particles move, so a one-sided term shows.
+  // (The angular momentum is no law of the linearised step: the across-the-spring part of dfdx
+  // turns the forces.)
+  SimulateRequest r = freeTriangle(2, 0.05, 30);
+  const SimulateResult result = student().simulate(r);
+  ASSERT_TRUE(ranAll(r, result));
+  const Vec2 p0 = momentumOf(r.particles);
+  double mass = 0, scale = 0;
+  Vec2 centre0 = Vec2::Zero();
+  for (const Particle& p : r.particles) mass += p.m, centre0 += p.m * p.x;
+  centre0 /= mass;
+  ManyInputs momenta("the linear momentum Σ m v", kMomentum), centres("the centre of mass", kMetre);
+  bool changed = false;
+  for (int k = 0; k < r.frames; ++k) {
+    const std::vector<Particle>& s = result.states[k];
+    Vec2 centre = Vec2::Zero();
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      scale = std::max(scale, s[i].m * s[i].v.norm());
+      centre += s[i].m * s[i].x / mass;
+      changed = changed || (s[i].v - r.particles[i].v).norm() > 1e-2;
+    }
+    const std::string when = "after step " + std::to_string(k + 1) + "; " + input(r);
+    momenta.expectNear(momentumOf(s), p0, relativeTo(3 * std::max(scale, p0.norm())), when);
+    centres.expectNear(centre, centre0 + p0 / mass * (r.frameDt * (k + 1)),
+                       relativeTo(2, kManySteps), when);
+  }
+  momenta.report(
+      hint("what a spring adds to one particle it takes from the other: -K on both diagonal "
+           "blocks, +K on both off-diagonal ones, and h² dfdx (v_j - v_i) to b_j with the "
+           "opposite to b_i"));
+  centres.report(hint("x += h v with the NEW v, for every particle"));
+  EXPECT_TRUE(changed) << currentTask() << ": no velocity changed in " << r.frames
+                       << " steps of stretched springs; " << input(r)
+                       << hint("stepImplicit must solve for Δv and apply it");
+}
+
+// Your step's velocity after one step from the triangle's positions with velocities v (2n long):
+// an affine function of v, since A does not depend on v and b does linearly.
+Eigen::VectorXd velocityAfterOneStep(const SimulateRequest& base, const Eigen::VectorXd& v,
+                                     bool& ran) {
+  SimulateRequest r = base;
+  for (std::size_t i = 0; i < r.particles.size(); ++i) r.particles[i].v = v.segment<2>(2 * i);
+  const SimulateResult result = student().simulate(r);
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(v.size());
+  ran = ran && ranAll(r, result);
+  if (!ran) return out;
+  for (std::size_t i = 0; i < r.particles.size(); ++i)
+    out.segment<2>(2 * i) = result.states[0][i].v;
+  return out;
+}
+
+// The springs' part of M - A assembled from YOUR springJacobians (undamped springs): +h² dfdx on
+// both diagonal blocks, -h² dfdx on both off-diagonal ones.
+Eigen::MatrixXd yourSpringsPart(const SimulateRequest& r, bool& ran) {
+  const double h = r.frameDt;
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(2 * r.particles.size(), 2 * r.particles.size());
+  for (const SpringData& spring : r.springs) {
+    SpringForceRequest q = springOf(r.particles[spring.i].x, r.particles[spring.j].x,
+                                    spring.restLength, spring.ks, spring.kd);
+    const SpringForceResult j = jacobiansOf(q);
+    ran = ran && j.ok();
+    const Mat2 k = h * h * j.dfdx;
+    s.block<2, 2>(2 * spring.i, 2 * spring.i) += k;
+    s.block<2, 2>(2 * spring.j, 2 * spring.j) += k;
+    s.block<2, 2>(2 * spring.i, 2 * spring.j) -= k;
+    s.block<2, 2>(2 * spring.j, 2 * spring.i) -= k;
+  }
+  return s;
+}
+
+TEST(Task7Implicit, TheStepSolvesTheSymmetricSystemOfYourSprings) {
+  // One step gives v' = v + A⁻¹ b, with A = M - h² K and b = h (f + h K v) (undamped springs,
+  // K assembled from your dfdx): v' = c + W v with W = A⁻¹ M. Your step's W, measured column by
+  // column from steps that differ in one velocity, gives back the system your code solved:
+  // M - M W⁻¹ = M - A = h² K. It must be symmetric, as the physics makes it (∂f_i/∂x_j =
+  // ∂f_j/∂x_i), and it must be the one your own springJacobians give (so a wrong Jacobian is the
+  // Jacobian checks' to blame, not this one). Any correct way to assemble and solve it passes.
+  const SimulateRequest base = freeTriangle(0, 0.05, 1);
+  const int n = static_cast<int>(base.particles.size());
+  bool ran = true;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(2 * n);
+  const Eigen::VectorXd c = velocityAfterOneStep(base, zero, ran);
+  Eigen::MatrixXd w(2 * n, 2 * n), mass = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  for (int k = 0; k < 2 * n && ran; ++k) {
+    w.col(k) = velocityAfterOneStep(base, Eigen::VectorXd::Unit(2 * n, k), ran) - c;
+    mass(k, k) = base.particles[k / 2].m;
+  }
+  const Eigen::MatrixXd expected = yourSpringsPart(base, ran);
+  ASSERT_TRUE(ran) << currentTask() << ": your code failed on one of the steps\n" << input(base);
+  ASSERT_GT(c.norm(), 1e-3) << currentTask()
+                            << ": one step from rest with stretched springs changed no velocity; "
+                            << input(base) << hint("stepImplicit must solve for Δv and apply it");
+  const Eigen::MatrixXd solved = mass - mass * w.inverse();
+  const double tol = kOneComputation * (mass.maxCoeff() + expected.cwiseAbs().maxCoeff());
+  const double asymmetry = (solved - solved.transpose()).cwiseAbs().maxCoeff();
+  EXPECT_LE(asymmetry, tol)
+      << currentTask() << ": the system your step solves, M - A, is not symmetric: its entries "
+      << "differ from their mirror images by up to " << num(asymmetry) << " kg\n"
+      << input(base)
+      << hint(
+             "add every spring's block at (i, j) AND at (j, i), with the same sign, and both "
+             "diagonal blocks");
+  const double off = (solved - expected).cwiseAbs().maxCoeff();
+  EXPECT_LE(off, tol) << currentTask() << ": the system your step solves differs by up to "
+                      << num(off) << " kg from the one your own springJacobians give (M - h² "
+                      << "dfdx on the diagonal blocks, + h² dfdx off them)\n"
+                      << input(base)
+                      << hint(
+                             "A = M - h dfdv - h² dfdx and b = h (f + h dfdx v): check each "
+                             "power of h and the term h dfdx v in b");
 }
 
 // A cloth of n x n cells of `size` m with structural and shear springs, pinned at its top left
