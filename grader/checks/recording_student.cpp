@@ -20,7 +20,7 @@ std::string publicCheckRunning() {
   if (info == nullptr) return "";
   const std::string suite = info->test_suite_name();
   if (suite.rfind("Task", 0) != 0 || suite.find("Hidden") != std::string::npos) return "";
-  if (suite.size() < 5 || suite[4] < '1' || suite[4] > '6') return "";  // task 7: not recorded
+  if (suite.size() < 5 || suite[4] < '1' || suite[4] > '7') return "";
   return suite + "." + info->name();
 }
 
@@ -31,6 +31,7 @@ harness::ForcesResult RecordingStudent::forces(const harness::ForcesRequest& r) 
   return keep(transcript_.forces, r, inner_.forces(r));
 }
 harness::SimulateResult RecordingStudent::simulate(const harness::SimulateRequest& r) {
+  if (r.implicit) return inner_.simulate(r);  // task 7's steps: no mistake is modelled on them
   return keep(transcript_.simulations, r, inner_.simulate(r));
 }
 harness::ClothResult RecordingStudent::buildCloth(const ClothSpec& s) {

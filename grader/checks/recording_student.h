@@ -33,9 +33,9 @@ class RecordingStudent final : public harness::StudentCode {
   Transcript transcript_;
 };
 
-/// The running check's name when it is a public physics check of tasks 1 to 6
-/// (Task<N><Suite>.<Name>, not a Task<N>Hidden one), else "". Task 7's checks ask springForce
-/// for Jacobians and simulate for implicit steps, which no known mistake of tasks 1 to 6 answers.
+/// The running check's name when it is a public physics check (Task<N><Suite>.<Name>, not a
+/// Task<N>Hidden one), else "". Task 7's implicit steps are not kept (simulate); its requests
+/// for Jacobians are, for the Jacobians' part-by-part models.
 std::string publicCheckRunning();
 
 }  // namespace a6::grader

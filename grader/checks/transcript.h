@@ -1,4 +1,4 @@
-// What the student's code answered to the public checks of tasks 1 to 6 (not the hidden ones,
+// What the student's code answered to the public checks of tasks 1 to 7 (not the hidden ones,
 // whose inputs are random, nor the images): each request beside its result, in the order the
 // checks asked. The checks stage gives it (RecordingStudent); the mistakes stage compares it
 // with the known mistakes (grader/mistakes/). Only requests that ran to the end are kept.

@@ -10,6 +10,8 @@ struct Tally {
   /// Like the mistake somewhere, never like the reference where they differ, and like the
   /// mistake at least as often as like neither.
   bool names() const { return mistake > 0 && reference == 0 && mistake >= neither; }
+  /// Like the mistake wherever it differs from the reference: a part-by-part model's rule.
+  bool fits() const { return mistake > 0 && reference == 0 && neither == 0; }
 };
 
 Tally tally(const std::vector<Likeness>& verdicts) {
@@ -27,14 +29,23 @@ Tally tally(const std::vector<Likeness>& verdicts) {
 std::vector<NamedMistake> nameMistakes(const Transcript& transcript,
                                        const std::vector<MistakeModel>& library,
                                        const std::set<int>& failingTasks) {
-  std::map<int, NamedMistake> best;  // per task: the model with the most evidence
+  std::map<int, NamedMistake> best;                  // per task: the model with the most evidence
+  std::map<int, std::vector<NamedMistake>> fitting;  // per task: the part-by-part models that fit
   for (const MistakeModel& model : library) {
     if (failingTasks.count(model.task) == 0 || !model.judge) continue;
     const Tally t = tally(model.judge(transcript));
+    if (model.partByPart) {
+      if (t.fits()) fitting[model.task].push_back({model.id, model.task, model.text, t.mistake});
+      continue;
+    }
     if (!t.names()) continue;
     const auto found = best.find(model.task);
     if (found != best.end() && found->second.evidence >= t.mistake) continue;
     best[model.task] = NamedMistake{model.id, model.task, model.text, t.mistake};
+  }
+  // One part-by-part model alone fits: the evidence singles out the parts and how they are wrong.
+  for (auto& [task, fits] : fitting) {
+    if (fits.size() == 1) best[task] = std::move(fits.front());
   }
   std::vector<NamedMistake> named;
   for (auto& [task, mistake] : best) named.push_back(std::move(mistake));

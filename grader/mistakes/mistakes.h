@@ -4,9 +4,10 @@
 // release has no library, and then names nothing).
 //
 // Takes the transcript and the tasks whose physics checks failed; gives at most one mistake per
-// such task. A mistake is named only when the student's answers are like it wherever it differs
-// from the reference, never like the reference there, and like it at least as often as like
-// neither: so a correct solution, however written, is never told it made one.
+// such task. A catalogue mistake is named only when the student's answers are like it wherever
+// it differs from the reference, never like the reference there, and like it at least as often
+// as like neither: so a correct solution, however written, is never told it made one. A
+// part-by-part one (MistakeModel::partByPart) only when it alone of its task's fits every answer.
 #pragma once
 
 #include <functional>
@@ -29,11 +30,15 @@ enum class Likeness {
 };
 
 struct MistakeModel {
-  std::string id;  ///< the name of its wrong version under tests/wrong/
+  std::string id;  ///< the name of its wrong version under tests/wrong/ (a catalogue model)
   int task = 0;
   std::string text;  ///< NamedMistake::text
   /// One likeness per request of the transcript that the model can answer.
   std::function<std::vector<Likeness>(const Transcript&)> judge;
+  /// A combination of a function's parts, each in the physics' form or a wrong one (library/
+  /// parts.cpp): named only when it fits every answer where it differs from the physics and no
+  /// other such model of its task does; it then takes the place of a catalogue model's name.
+  bool partByPart = false;
 };
 
 /// The library of known mistakes (empty where the library is not built: a student release).

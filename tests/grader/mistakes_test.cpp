@@ -54,13 +54,14 @@ TEST(MistakeLibrary, EveryModelIsAWrongVersionOfItsTask) {
   std::set<std::string> ids;
   for (const MistakeModel& m : mistakeLibrary()) {
     EXPECT_TRUE(ids.insert(m.id).second) << m.id << " is in the library twice";
+    EXPECT_EQ(m.text.rfind("Your ", 0), 0u) << m.id << ": the sentence speaks to the student";
+    EXPECT_LT(m.text.size(), 400u) << m.id << ": one sentence";
+    if (m.partByPart) continue;  // a combination of parts: a wrong version where one was written
     const std::string expect = expectOf(m.id);
     EXPECT_NE(expect.find("fail: " + std::to_string(m.task)), std::string::npos)
         << "tests/wrong/" << m.id << "/EXPECT must say 'fail: " << m.task << "'";
     EXPECT_NE(expect.find("mistake: " + m.id), std::string::npos)
         << "tests/wrong/" << m.id << "/EXPECT must say 'mistake: " << m.id << "'";
-    EXPECT_EQ(m.text.rfind("Your ", 0), 0u) << m.id << ": the sentence speaks to the student";
-    EXPECT_LT(m.text.size(), 320u) << m.id << ": one sentence";
   }
 }
 
@@ -103,6 +104,53 @@ TEST(NameMistakes, AnAnswerLikeTheReferenceSomewhereVetoesTheMistake) {
   EXPECT_EQ(named(t, {1}), std::set<std::string>{"t1_damping_full_relative_velocity"});
   t.springs.push_back(stretched(Vec2(-6, 0)));
   EXPECT_EQ(named(t, {1}), std::set<std::string>{});
+}
+
+// The same spring with p1 still and p2 moving along it at 1 m/s: u·e = 1, so each damping form
+// differs from the others.
+Exchange<SpringForceRequest, SpringForceResult> moving(Vec2 answer) {
+  Exchange<SpringForceRequest, SpringForceResult> x = stretched(answer);
+  x.request.p1.v = Vec2(0, 0), x.request.p2.v = Vec2(1, 0);
+  return x;
+}
+
+TEST(NameMistakes, TheWrongPartIsNamedWhenTheAnswersSingleItOut) {
+  // Damping with the wrong sign: -5 + 2 (0.5) = -4 on the first spring, -5 + 2 = -3 on the second.
+  Transcript t;
+  t.springs.push_back(stretched(Vec2(-4, 0)));
+  t.springs.push_back(moving(Vec2(-3, 0)));
+  const auto found = nameMistakes(t, mistakeLibrary(), {1});
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].id, "t1_damping_sign");
+  EXPECT_NE(found[0].text.find("damping term has the wrong sign"), std::string::npos)
+      << found[0].text;
+  EXPECT_NE(found[0].text.find("its elastic term is right"), std::string::npos) << found[0].text;
+}
+
+TEST(NameMistakes, AnswersThatFitTwoExplanationsNameNothing) {
+  // Ends at rest: every damping form is zero, so +ks (l - l0) e fits the wrong elastic sign with
+  // any of them. Nothing singles one out: nothing is named.
+  Exchange<SpringForceRequest, SpringForceResult> x = stretched(Vec2(5, 0));
+  x.request.p1.v = x.request.p2.v = Vec2(0, 0);
+  Transcript t;
+  t.springs.push_back(x);
+  EXPECT_EQ(named(t, {1}), std::set<std::string>{});
+  // An answer no form of the parts gives: nothing either.
+  t.springs.push_back(stretched(Vec2(123, 4)));
+  EXPECT_EQ(named(t, {1}), std::set<std::string>{});
+}
+
+TEST(NameMistakes, AJacobianBlockIsNamedByItsPart) {
+  // The spring along x, stretched to 1.5 m (l0 1, ks 10, kd 2): dfdx = -10 diag(1, 1/3), dfdv =
+  // -2 diag(1, 0). dfdv with the outer product left out: -2 I; dfdx right.
+  Exchange<SpringForceRequest, SpringForceResult> x = stretched(Vec2(0, 0));
+  x.request.jacobians = true;
+  x.result.dfdx << -10, 0, 0, -10.0 / 3;
+  x.result.dfdv << -2, 0, 0, -2;
+  Transcript t;
+  t.springs.push_back(x);
+  EXPECT_EQ(named(t, {7}), std::set<std::string>{"t7_dfdv_no_outer_product"});
+  EXPECT_EQ(named(t, {1}), std::set<std::string>{}) << "a Jacobian request tells task 1 nothing";
 }
 
 TEST(NameMistakes, NaNIsLikeTheMissingGuard) {

@@ -206,14 +206,20 @@ std::string expectReplays(const fs::path& out, bool correct) {
   return html;
 }
 
-// A wrong version with a model in the library is named, first in every failed item of its
-// task (Gradescope's output leads with it, extra_data carries it); no other mistake is named.
+// A wrong version whose EXPECT names a mistake is named, first in every failed item of its task
+// (Gradescope's output leads with it, extra_data carries it); no other mistake is named, and one
+// whose EXPECT names none is named nothing: a wrong name is never given.
 void expectMistakeNamed(const Graded& g, const std::string& name, const std::set<int>& failing) {
   const std::string id = a6::test::staging::expectedMistake(name);
   const std::set<std::string> named = mistakesNamed(g.results);
   std::printf("[ mistakes ] %s: expected %s, named %s\n", name.c_str(),
               id.empty() ? "none" : id.c_str(), json(named).dump().c_str());
-  if (id.empty()) return;
+  if (id.empty()) {
+    EXPECT_EQ(named, std::set<std::string>{})
+        << name << ": its EXPECT names no mistake, so none may be named (if the name is right, "
+        << "add 'mistake: <id>' to tests/wrong/" << name << "/EXPECT)";
+    return;
+  }
   EXPECT_EQ(named, std::set<std::string>{id}) << name << ": the report must name its mistake";
   for (const json& t : g.results["tests"]) {
     const bool ofTask = std::any_of(failing.begin(), failing.end(), [&](int task) {

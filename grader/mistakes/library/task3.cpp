@@ -1,7 +1,9 @@
 // Task 3, time stepping: the reference symplectic Euler step with the reference forces (the
 // checks of task 3 ask the probe for them too: referenceForces), advance(T, n) as n steps of
-// T / n, and the mistakes of tests/wrong/t3_*, each answering SimulateRequest as that wrong
-// version does. Requests run on the student's own forces cannot be modelled: they are skipped.
+// T / n, and its mistakes part by part: the step's parts (resetting the forces, a spring's two
+// ends, the mass, the order of v and x, the pins, the substeps' length) each in the physics' form
+// or a wrong one, with one or two parts wrong. Requests run on the student's own forces or with
+// the implicit step cannot be modelled: they are skipped.
 #include <optional>
 
 #include "mistakes/library/compare.h"
@@ -15,14 +17,14 @@ namespace {
 using harness::SimulateRequest;
 using harness::SimulateResult;
 
-enum class Flaw {
-  None,
-  PositionFirst,
-  NoMassDivision,
-  ForcesNotReset,
-  NoPinning,
-  SpringSameSign,
-  SubstepsFullDt
+// One form of the step, part by part; the default is the physics'.
+struct StepForm {
+  bool forcesKept = false;      ///< p.f += externalForce(p): the last step's forces never reset
+  int springEnds = 0;           ///< 0: p2 +f, p1 -f; 1: both +f; 2: p2 -f, p1 +f
+  bool noMassDivision = false;  ///< v += f dt
+  bool positionFirst = false;   ///< x += v dt before v += f/m dt
+  int pins = 0;                 ///< 0: skipped; 1: moved like the others; 2: only x kept; 3: only v
+  bool substepFullDt = false;   ///< advance's substeps each take the whole frameDt
 };
 
 struct System {
@@ -32,35 +34,36 @@ struct System {
 };
 
 // 1. each particle's external force, 2. every spring's force on both ends.
-void accumulateForces(System& s, Flaw flaw) {
+void accumulateForces(System& s, const StepForm& form) {
   for (Particle& p : s.particles) {
     const Vec2 f = referenceExternalForce(p, s.env);
-    p.f = flaw == Flaw::ForcesNotReset ? Vec2(p.f + f) : f;
+    p.f = form.forcesKept ? Vec2(p.f + f) : f;
   }
   for (const SpringData& d : s.springs) {
     Particle& p1 = s.particles[static_cast<std::size_t>(d.i)];
     Particle& p2 = s.particles[static_cast<std::size_t>(d.j)];
     const Spring spring{&p1, &p2, d.restLength, d.ks, d.kd, d.type};
     const Vec2 f = referenceSpringForce(spring);
-    p2.f += f;
-    p1.f += flaw == Flaw::SpringSameSign ? f : Vec2(-f);
+    p2.f += form.springEnds == 2 ? Vec2(-f) : f;
+    p1.f += form.springEnds == 0 ? Vec2(-f) : f;
   }
 }
 
-// 3. velocity, then position with the new velocity (or the flaw's order and division).
-void step(System& s, double dt, Flaw flaw) {
-  accumulateForces(s, flaw);
+// 3. velocity, then position with the new velocity (or the form's order, division and pins).
+void step(System& s, double dt, const StepForm& form) {
+  accumulateForces(s, form);
   for (Particle& p : s.particles) {
-    if (p.pinned && flaw != Flaw::NoPinning) continue;
-    const Vec2 dv = (flaw == Flaw::NoMassDivision ? p.f : Vec2(p.f / p.m)) * dt;
-    if (flaw == Flaw::PositionFirst) p.x += p.v * dt;
-    p.v += dv;
-    if (flaw != Flaw::PositionFirst) p.x += p.v * dt;
+    if (p.pinned && form.pins == 0) continue;
+    const bool moveV = !p.pinned || form.pins != 3, moveX = !p.pinned || form.pins != 2;
+    const Vec2 dv = (form.noMassDivision ? p.f : Vec2(p.f / p.m)) * dt;
+    if (form.positionFirst && moveX) p.x += p.v * dt;
+    if (moveV) p.v += dv;
+    if (!form.positionFirst && moveX) p.x += p.v * dt;
   }
 }
 
-std::optional<SimulateResult> simulate(const SimulateRequest& r, Flaw flaw) {
-  if (!r.referenceForces) return std::nullopt;
+std::optional<SimulateResult> simulate(const SimulateRequest& r, const StepForm& form) {
+  if (!r.referenceForces || r.implicit) return std::nullopt;
   for (const SpringData& d : r.springs) {
     const int n = static_cast<int>(r.particles.size());
     if (d.i < 0 || d.j < 0 || d.i >= n || d.j >= n) return std::nullopt;
@@ -69,9 +72,9 @@ std::optional<SimulateResult> simulate(const SimulateRequest& r, Flaw flaw) {
   SimulateResult out;
   const int every = std::max(1, r.recordEvery);
   const int substeps = r.stepOnly ? 1 : std::max(1, r.substeps);
-  const double dt = r.stepOnly || flaw == Flaw::SubstepsFullDt ? r.frameDt : r.frameDt / substeps;
+  const double dt = r.stepOnly || form.substepFullDt ? r.frameDt : r.frameDt / substeps;
   for (int frame = 1; frame <= r.frames; ++frame) {
-    for (int k = 0; k < substeps; ++k) step(s, dt, flaw);
+    for (int k = 0; k < substeps; ++k) step(s, dt, form);
     if (frame % every == 0 || frame == r.frames) {
       out.recordedFrames.push_back(frame);
       out.states.push_back(s.particles);
@@ -97,40 +100,79 @@ bool same(const SimulateResult& a, const SimulateResult& b) {
   return true;
 }
 
-MistakeModel model(const char* id, Flaw flaw, const char* text) {
-  auto judge = [flaw](const Transcript& t) {
-    return judgeEach(
-        t.simulations, [](const SimulateRequest& r) { return simulate(r, Flaw::None); },
-        [flaw](const SimulateRequest& r) { return simulate(r, flaw); }, same);
+// One wrong form of one part of the step: its key (the model's id; a one-part form's is the
+// wrong version's it was first written from, tests/wrong/t3_<key>), what it does, and the form.
+struct WrongPart {
+  int part;  // parts with the same number exclude each other
+  const char* key;
+  const char* does;
+  void (*apply)(StepForm&);
+};
+
+const std::vector<WrongPart>& wrongParts() {
+  static const std::vector<WrongPart> parts = {
+      {0, "forces_not_reset",
+       "never resets the forces (p.f += externalForce(p) adds to the last step's): start each "
+       "step with p.f = externalForce(p)",
+       [](StepForm& f) { f.forcesKept = true; }},
+      {1, "spring_force_same_sign", "gives both ends of a spring +f: p1 must get -f",
+       [](StepForm& f) { f.springEnds = 1; }},
+      {1, "spring_ends_swapped",
+       "gives p2 -f and p1 +f: the force springForce returns is p2's, p1 gets its opposite",
+       [](StepForm& f) { f.springEnds = 2; }},
+      {2, "force_not_divided_by_mass",
+       "does not divide the force by the mass: the acceleration is f / m",
+       [](StepForm& f) { f.noMassDivision = true; }},
+      {3, "position_before_velocity",
+       "moves x with the old velocity (x += v dt before v += f/m dt): update v first, then x "
+       "with the new v",
+       [](StepForm& f) { f.positionFirst = true; }},
+      {4, "missing_pinning", "moves pinned particles too: skip them for both v and x",
+       [](StepForm& f) { f.pins = 1; }},
+      {4, "pinned_velocity_changes",
+       "changes a pinned particle's velocity (only its x is kept): skip it for v too",
+       [](StepForm& f) { f.pins = 2; }},
+      {4, "pinned_position_moves",
+       "moves a pinned particle's x with its velocity (only its v is kept): skip it for x too",
+       [](StepForm& f) { f.pins = 3; }},
+      {5, "substeps_reuse_frame_dt",
+       "takes substeps of the whole frame time in advance: each must be frameDt / n long",
+       [](StepForm& f) { f.substepFullDt = true; }},
   };
-  return MistakeModel{id, 3, text, judge};
+  return parts;
+}
+
+MistakeModel model(const std::vector<const WrongPart*>& wrong) {
+  StepForm form;
+  std::string key, text = "Your step ";
+  for (const WrongPart* part : wrong) {
+    part->apply(form);
+    key += (key.empty() ? "" : "_and_") + std::string(part->key);
+    text += (part == wrong.front() ? "" : "; it ") + std::string(part->does);
+  }
+  auto judge = [form](const Transcript& t) {
+    return judgeEach(
+        t.simulations, [](const SimulateRequest& r) { return simulate(r, StepForm{}); },
+        [form](const SimulateRequest& r) { return simulate(r, form); }, same);
+  };
+  MistakeModel m{"t3_" + key, 3, text + ".", judge};
+  m.partByPart = true;
+  return m;
 }
 
 }  // namespace
 
+// Every step with one or two parts in a wrong form, named part by part (MistakeModel::partByPart).
 std::vector<MistakeModel> task3Mistakes() {
-  return {
-      model("t3_position_before_velocity", Flaw::PositionFirst,
-            "Your step behaves exactly like explicit Euler: x += v dt comes before v += f/m dt, "
-            "so the position moves with the old velocity and a spring's energy grows every step; "
-            "update the velocity first, then the position with the new velocity."),
-      model("t3_force_not_divided_by_mass", Flaw::NoMassDivision,
-            "Your step behaves exactly like v += f dt: the force is not divided by the mass; the "
-            "acceleration is f / m."),
-      model("t3_forces_not_reset", Flaw::ForcesNotReset,
-            "Your step behaves exactly like one that never resets the forces (p.f += "
-            "externalForce(p)): each step adds on top of the last step's total; start each step "
-            "with p.f = externalForce(p)."),
-      model("t3_missing_pinning", Flaw::NoPinning,
-            "Your step behaves exactly like one that moves pinned particles too: skip every "
-            "particle with pinned set when you update v and x."),
-      model("t3_spring_force_same_sign", Flaw::SpringSameSign,
-            "Your step behaves exactly like one that gives both ends of a spring +f: p2 gets +f "
-            "and p1 must get -f, or momentum is not conserved."),
-      model("t3_substeps_reuse_frame_dt", Flaw::SubstepsFullDt,
-            "Your advance behaves exactly like n steps of the whole frame time: each substep "
-            "must be frameDt / n long, or the simulation runs n times too fast."),
-  };
+  std::vector<MistakeModel> models;
+  const std::vector<WrongPart>& parts = wrongParts();
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    models.push_back(model({&parts[i]}));
+    for (std::size_t j = i + 1; j < parts.size(); ++j) {
+      if (parts[j].part != parts[i].part) models.push_back(model({&parts[i], &parts[j]}));
+    }
+  }
+  return models;
 }
 
 }  // namespace a6::grader::mistakes
@@ -138,7 +180,7 @@ std::vector<MistakeModel> task3Mistakes() {
 namespace a6::grader {
 
 std::optional<harness::SimulateResult> referenceSimulation(const harness::SimulateRequest& r) {
-  return mistakes::simulate(r, mistakes::Flaw::None);
+  return mistakes::simulate(r, mistakes::StepForm{});
 }
 
 }  // namespace a6::grader

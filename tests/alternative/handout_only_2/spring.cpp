@@ -1,0 +1,15 @@
+// Task 1 — Spring::computeForce
+#include "a6/spring.h"
+
+namespace a6 {
+
+Vec2 Spring::computeForce() const {
+  const Vec2 d = p2->x - p1->x;
+  const double l = d.norm();
+  if (l < 1e-12) return Vec2::Zero();
+  const Vec2 e = d / l;
+  const double vRel = (p2->v - p1->v).dot(e);
+  return -ks * (l - restLength) * e - kd * vRel * e;
+}
+
+}  // namespace a6

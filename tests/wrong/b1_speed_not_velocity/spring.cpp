@@ -1,0 +1,18 @@
+// WRONG VERSION (task 1, written blind from the handout): v_rel is the relative speed |v2 - v1|
+// (always >= 0) instead of the signed projection (v2 - v1)·e, so damping always pulls p2 toward p1,
+// even when the particles approach or move sideways.
+// Task 1 — Spring::computeForce
+#include "a6/spring.h"
+
+namespace a6 {
+
+Vec2 Spring::computeForce() const {
+  const Vec2 d = p2->x - p1->x;
+  const double l = d.norm();
+  if (l < 1e-12) return Vec2::Zero();
+  const Vec2 e = d / l;
+  const double vRel = (p2->v - p1->v).norm();
+  return -ks * (l - restLength) * e - kd * vRel * e;
+}
+
+}  // namespace a6

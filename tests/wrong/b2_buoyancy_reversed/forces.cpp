@@ -1,0 +1,31 @@
+// WRONG VERSION (task 2, written blind from the handout): Buoyancy uses (T_air - T) instead of (T -
+// T_air), so hot particles sink and cold ones rise.
+// Task 2 — the forces
+#include "a6/forces.h"
+
+namespace a6 {
+
+Vec2 gravityForce(const Particle& p, const Vec2& g) { return p.m * g; }
+
+Vec2 buoyancyForce(const Particle& p, double b, double airTemperature) {
+  return Vec2(0.0, b * (airTemperature - p.temperature));
+}
+
+Vec2 dragForce(const Particle& p, double kd) { return -kd * p.v; }
+
+Vec2 repulsionForce(const Contact& contact, double kr) {
+  if (contact.depth > 0) return kr * contact.depth * contact.normal;
+  return Vec2::Zero();
+}
+
+Vec2 externalForce(const Particle& p, const Environment& env) {
+  Vec2 f = gravityForce(p, env.gravity) + buoyancyForce(p, env.buoyancy, env.airTemperature) +
+           dragForce(p, env.drag);
+  for (const HalfPlane& plane : env.planes)
+    f += repulsionForce(contactWith(plane, p.x), env.repulsion);
+  for (const CircleObstacle& circle : env.circles)
+    f += repulsionForce(contactWith(circle, p.x), env.repulsion);
+  return f;
+}
+
+}  // namespace a6

@@ -1,0 +1,31 @@
+// WRONG VERSION (task 2, written blind from the handout): repulsionForce has no depth > 0 check and
+// always returns k_r d n, so outside an obstacle (d <= 0) it pulls the particle toward the
+// obstacle.
+// Task 2 — the forces
+#include "a6/forces.h"
+
+namespace a6 {
+
+Vec2 gravityForce(const Particle& p, const Vec2& g) { return p.m * g; }
+
+Vec2 buoyancyForce(const Particle& p, double b, double airTemperature) {
+  return Vec2(0.0, b * (p.temperature - airTemperature));
+}
+
+Vec2 dragForce(const Particle& p, double kd) { return -kd * p.v; }
+
+Vec2 repulsionForce(const Contact& contact, double kr) {
+  return kr * contact.depth * contact.normal;
+}
+
+Vec2 externalForce(const Particle& p, const Environment& env) {
+  Vec2 f = gravityForce(p, env.gravity) + buoyancyForce(p, env.buoyancy, env.airTemperature) +
+           dragForce(p, env.drag);
+  for (const HalfPlane& plane : env.planes)
+    f += repulsionForce(contactWith(plane, p.x), env.repulsion);
+  for (const CircleObstacle& circle : env.circles)
+    f += repulsionForce(contactWith(circle, p.x), env.repulsion);
+  return f;
+}
+
+}  // namespace a6

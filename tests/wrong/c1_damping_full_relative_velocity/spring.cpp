@@ -1,0 +1,18 @@
+// WRONG VERSION (task 1, written blind from the handout): The damping term is -kd (v2 - v1) on the
+// full relative velocity instead of -kd ((v2 - v1)·e) e, so a sideways relative velocity gives a
+// damping force across the spring.
+// Task 1 — Spring::computeForce
+#include "a6/spring.h"
+
+namespace a6 {
+
+Vec2 Spring::computeForce() const {
+  const Vec2 d = p2->x - p1->x;
+  const double l = d.norm();
+  if (l < 1e-12) return Vec2::Zero();
+  const Vec2 e = d / l;
+  const double vRel = (p2->v - p1->v).dot(e);
+  return -ks * (l - restLength) * e - kd * (p2->v - p1->v);
+}
+
+}  // namespace a6

@@ -1,0 +1,40 @@
+// WRONG VERSION (task 5, written blind from the handout): The emitter's velocity offset is drawn
+// uniform in [0, s] per component instead of [-s, s], so the mean initial velocity is spec.velocity
+// + (s/2, s/2) and the spread is halved.
+// Task 5 — the particle system
+#include "a6/particle_system.h"
+
+#include <algorithm>
+
+namespace a6 {
+
+Particle emitParticle(const EmitterSpec& spec, Random& rng) {
+  Particle p;
+  p.x = spec.position + rng.inDisc(spec.radius);
+  const double s = spec.velocitySpread;
+  p.v = spec.velocity + Vec2(rng.uniform(0.0, s), rng.uniform(0.0, s));
+  p.temperature = rng.uniform(spec.temperatureMin, spec.temperatureMax);
+  p.lifetime = rng.uniform(spec.lifetimeMin, spec.lifetimeMax);
+  p.age = 0.0;
+  p.m = spec.mass;
+  return p;
+}
+
+void ParticleSystem::update(double dt) {
+  const int count = emissionCount(dt);
+  for (int k = 0; k < count; ++k) particles.push_back(emitParticle(emitter, rng));
+
+  for (Particle& p : particles) {
+    p.f = externalForce(p);
+    p.v += p.f / p.m * dt;
+    p.x += p.v * dt;
+    p.temperature += -coolingRate * (p.temperature - env.airTemperature) * dt;
+    p.age += dt;
+  }
+
+  particles.erase(std::remove_if(particles.begin(), particles.end(),
+                                 [](const Particle& p) { return p.age >= p.lifetime; }),
+                  particles.end());
+}
+
+}  // namespace a6
