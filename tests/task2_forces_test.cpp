@@ -314,6 +314,17 @@ TEST(Task2Forces, ExternalForceAddsTwoOverlappingCircles) {
       << totalHint(got, r, {Vec2(0, -11.772), Vec2::Zero(), Vec2::Zero()},
                    "every obstacle the particle is inside pushes on its own: sum them "
                    "all, using each obstacle's own depth and normal from contactWith");
+
+  // The two circles alone, without the half-plane: (12 - 40, 16 - 11.772) = (-28, 4.228). (A
+  // sum that skips the circles, and one that stops at the first obstacle, differ here.)
+  env.planes.clear();
+  const auto circles = request(p, env);
+  const harness::ForcesResult alone = forcesOf(circles);
+  EXPECT_VEC_NEAR(alone.total, Vec2(-28, 4.228), tol(circles))
+      << input(circles)
+      << totalHint(alone, circles, {Vec2(0, -11.772), Vec2::Zero(), Vec2::Zero()},
+                   "every circle the particle is inside pushes on its own, after the "
+                   "half-planes: sum them all, never stop at the first");
 }
 
 TEST(Task2Forces, ObstaclesOutsideAddNothing) {

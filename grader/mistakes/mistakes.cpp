@@ -7,9 +7,8 @@ namespace {
 
 struct Tally {
   int mistake = 0, reference = 0, neither = 0;
-  /// Like the mistake somewhere, never like the reference where they differ, and like the
-  /// mistake at least as often as like neither.
-  bool names() const { return mistake > 0 && reference == 0 && mistake >= neither; }
+  /// Like the mistake somewhere, never like the reference or like neither where they differ.
+  bool names() const { return mistake > 0 && reference == 0 && neither == 0; }
   /// Like the mistake wherever it differs from the reference: a part-by-part model's rule.
   bool fits() const { return mistake > 0 && reference == 0 && neither == 0; }
 };

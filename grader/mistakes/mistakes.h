@@ -5,9 +5,10 @@
 //
 // Takes the transcript and the tasks whose physics checks failed; gives at most one mistake per
 // such task. A catalogue mistake is named only when the student's answers are like it wherever
-// it differs from the reference, never like the reference there, and like it at least as often
-// as like neither: so a correct solution, however written, is never told it made one. A
-// part-by-part one (MistakeModel::partByPart) only when it alone of its task's fits every answer.
+// it differs from the reference (never like the reference there, nor like neither): so a correct
+// solution, however written, is never told it made one, and a mistake that matches another on
+// some inputs is not named for it where they part. A part-by-part one (MistakeModel::partByPart)
+// only when, besides, it alone of its task's fits every answer.
 #pragma once
 
 #include <functional>
