@@ -28,17 +28,14 @@ while [ $# -gt 0 ]; do
 done
 [ "$(id -u)" -eq 0 ] || { echo "bench-first-hour: run as root (it makes the student's user)" >&2; exit 2; }
 
-student=""
-for uid in $(seq 4200 4299); do
-  getent passwd "$uid" >/dev/null || pgrep -U "$uid" >/dev/null || { student=$uid; break; }
-done
-[ -n "$student" ] || { echo "bench-first-hour: no free uid in 4200..4299" >&2; exit 1; }
+source scripts/student-user.sh
+student=$(free_student_uid 4200 4299) ||
+  { echo "bench-first-hour: no free uid in 4200..4299" >&2; exit 1; }
 home=$(mktemp -d /tmp/a6-first-hour.XXXXXX)
 trap 'rm -rf "$home"' EXIT
 chmod 0700 "$home"
 as_student() {
-  (cd "$home/release" && setpriv --reuid="$student" --regid="$student" --clear-groups \
-    env CCACHE_DIR="$home/.cache/ccache" HOME="$home" USER=student LOGNAME=student "$@")
+  (cd "$home/release" && run_as_student "$student" "$home" "$home/.cache/ccache" "$@")
 }
 # seconds LOG COMMAND...: the wall time of one run as the student, its output in LOG.
 seconds() {

@@ -32,11 +32,9 @@ start=$(date +%s)
 as_student() { "$@"; }
 home="$work/home"
 if [ "$(id -u)" -eq 0 ]; then
-  student=""
-  for uid in $(seq 4100 4199); do
-    getent passwd "$uid" >/dev/null || pgrep -U "$uid" >/dev/null || { student=$uid; break; }
-  done
-  [ -n "$student" ] || { echo "FAIL: no free uid in 4100..4199 for the student"; exit 1; }
+  source "$root/scripts/student-user.sh"
+  student=$(free_student_uid 4100 4199) ||
+    { echo "FAIL: no free uid in 4100..4199 for the student"; exit 1; }
   # The student's home must be reachable by that user: under the build folder when its parents
   # let every user through, else (a checkout in root's home, mode 0700) a folder in /tmp.
   mkdir -p "$work"
@@ -54,10 +52,7 @@ if [ "$(id -u)" -eq 0 ]; then
   if [ -L "$cache" ] || [ ! -d "$cache" ] || [ "$(stat -c %u "$cache")" != "$student" ]; then
     cache="$home/.cache/ccache"  # another's folder, or a link: never used
   fi
-  as_student() {
-    setpriv --reuid="$student" --regid="$student" --clear-groups \
-      env CCACHE_DIR="$cache" HOME="$home" USER=student LOGNAME=student "$@"
-  }
+  as_student() { run_as_student "$student" "$home" "$cache" "$@"; }
 fi
 mkdir -p "$home"
 chmod 0700 "$home"
