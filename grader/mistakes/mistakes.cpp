@@ -7,9 +7,8 @@ namespace {
 
 struct Tally {
   int mistake = 0, reference = 0, neither = 0;
-  /// Like the mistake somewhere, never like the reference or like neither where they differ.
-  bool names() const { return mistake > 0 && reference == 0 && neither == 0; }
-  /// Like the mistake wherever it differs from the reference: a part-by-part model's rule.
+  /// Like the mistake somewhere, and wherever it differs from the reference (never like the
+  /// reference there, nor like neither).
   bool fits() const { return mistake > 0 && reference == 0 && neither == 0; }
 };
 
@@ -37,7 +36,7 @@ std::vector<NamedMistake> nameMistakes(const Transcript& transcript,
       if (t.fits()) fitting[model.task].push_back({model.id, model.task, model.text, t.mistake});
       continue;
     }
-    if (!t.names()) continue;
+    if (!t.fits()) continue;
     const auto found = best.find(model.task);
     if (found != best.end() && found->second.evidence >= t.mistake) continue;
     best[model.task] = NamedMistake{model.id, model.task, model.text, t.mistake};

@@ -153,6 +153,20 @@ TEST(NameMistakes, AJacobianBlockIsNamedByItsPart) {
   EXPECT_EQ(named(t, {1}), std::set<std::string>{}) << "a Jacobian request tells task 1 nothing";
 }
 
+TEST(NameMistakes, AStubIsNamedNothing) {
+  // Zero Jacobians for a spring at its rest length with kd = 0 are what dfdx_isotropic with dfdv
+  // missing gives there: a stub's zeros never name a mistake.
+  Exchange<SpringForceRequest, SpringForceResult> x = stretched(Vec2(0, 0));
+  x.request.p2.x = Vec2(1, 0);
+  x.request.kd = 0;
+  x.request.jacobians = true;
+  Transcript t;
+  t.springs.push_back(x);
+  EXPECT_EQ(named(t, {7}), std::set<std::string>{});
+  t.springs.push_back(stretched(Vec2(0, 0)));  // the force of a stub computeForce
+  EXPECT_EQ(named(t, {1, 7}), std::set<std::string>{});
+}
+
 TEST(NameMistakes, NaNIsLikeTheMissingGuard) {
   Exchange<SpringForceRequest, SpringForceResult> x = stretched(Vec2(NAN, NAN));
   x.request.p2.x = x.request.p1.x;
