@@ -32,7 +32,7 @@ source scripts/student-user.sh
 student=$(free_student_uid 4200 4299) ||
   { echo "bench-first-hour: no free uid in 4200..4299" >&2; exit 1; }
 home=$(mktemp -d /tmp/a6-first-hour.XXXXXX)
-trap 'rm -rf "$home"' EXIT
+trap 'end_student_processes "$student"; rm -rf "$home"' EXIT
 chmod 0700 "$home"
 as_student() {
   (cd "$home/release" && run_as_student "$student" "$home" "$home/.cache/ccache" "$@")

@@ -11,6 +11,13 @@ free_student_uid() {
   return 1
 }
 
+# end_student_processes UID: ends every process of UID (a uid free_student_uid chose, so every one
+# of its processes was started by the caller's runs as it).
+end_student_processes() {
+  pkill -KILL -U "$1" 2>/dev/null
+  return 0
+}
+
 # run_as_student UID HOME CACHE COMMAND...: runs COMMAND as UID (its own gid, no other group),
 # with HOME as its home folder and CACHE as its compiler cache.
 run_as_student() {

@@ -37,10 +37,15 @@ if [ "$(id -u)" -eq 0 ]; then
     { echo "FAIL: no free uid in 4100..4199 for the student"; exit 1; }
   # The student's home must be reachable by that user: under the build folder when its parents
   # let every user through, else (a checkout in root's home, mode 0700) a folder in /tmp.
+  # Whatever the student's steps left running (the release's desktop test, killed by its own
+  # time-out on a loaded machine, leaves its Xvfb and VNC server) ends with this test: the uid
+  # had no process when it was chosen, so every process of it is this test's.
+  scratch=""
+  trap 'end_student_processes "$student"; [ -z "$scratch" ] || rm -rf "$scratch"' EXIT
   mkdir -p "$work"
   if ! setpriv --reuid="$student" --regid="$student" --clear-groups test -x "$work"; then
     home=$(mktemp -d /tmp/a6-student-home.XXXXXX)
-    trap 'rm -rf "$home"' EXIT
+    scratch=$home
   fi
   # The student's compiler cache: the machine's, like root's own (~/.cache/ccache), in a folder
   # only that uid owns, so that a second run here compiles what changed, not the release again

@@ -28,6 +28,11 @@ cleanup() {
   bash "$root/scripts/desktop.sh" stop >/dev/null
 }
 trap cleanup EXIT
+# Killed outright (ctest's time-out on a loaded machine), this script runs no trap, and the
+# desktop's servers, no children of it any more, would outlive it: a watcher outside its process
+# tree stops them once this shell is gone.
+setsid -f bash -c 'while kill -0 "$1" 2>/dev/null; do sleep 1; done
+  bash "$2/scripts/desktop.sh" stop >/dev/null 2>&1' _ "$$" "$root"
 
 start=$(date +%s.%N)
 bash "$root/scripts/desktop.sh" start || { echo "FAIL: the desktop did not start"; exit 1; }
