@@ -14,6 +14,7 @@
 #include <string>
 
 #include "run_command.h"
+#include "scoring/rubric.h"
 
 namespace {
 
@@ -153,10 +154,14 @@ TEST(GradeSubmission, TheSolutionGetsFullMarksAndTheExtraCredit) {
   const Outcome r = grade(A6_SOURCE_DIR "/solution", out);
   EXPECT_EQ(r.status, 0) << r.output;
   const json j = results(out);
-  EXPECT_EQ(j["extra_data"]["max_score"], 100);
-  EXPECT_GT(j["extra_data"]["extra_credit"].get<double>(), 0);
-  EXPECT_EQ(j["score"].get<double>(), 100 + j["extra_data"]["extra_credit"].get<double>())
-      << r.output;
+  // The rubric's own numbers (an instructor's rubric has its own: read, never pinned).
+  const a6::grader::Rubric rubric = a6::grader::loadRubric(A6_DEFAULT_RUBRIC);
+  ASSERT_TRUE(rubric.ok()) << rubric.error;
+  double extra = 0;
+  for (const auto& item : rubric.items) extra += item.extraCredit ? item.points : 0;
+  EXPECT_EQ(j["extra_data"]["max_score"].get<double>(), rubric.totalPoints);
+  EXPECT_EQ(j["extra_data"]["extra_credit"].get<double>(), extra);
+  EXPECT_EQ(j["score"].get<double>(), rubric.totalPoints + extra) << r.output;
   for (const json& t : j["tests"]) EXPECT_EQ(t["status"], "passed") << t;
   EXPECT_EQ(j["extra_data"]["seed"], "7");
   EXPECT_NE(r.output.find("total"), std::string::npos) << "the summary on stdout";

@@ -232,18 +232,19 @@ TEST(RubricErrors, AMissingFileSaysSo) {
 
 // The default rubric against the checks the grader really runs (a6_grade --list-tests) -----------
 
-TEST(DefaultRubric, LoadsAndTotalsExactly100) {
+// Its numbers are the instructor's to change (docs/instructor.md, "Adapting the assignment"):
+// the tests read them from the rubric, never pin them.
+TEST(DefaultRubric, LoadsAndTotalsItsItems) {
   const Rubric r = loadRubric(A6_DEFAULT_RUBRIC);
   ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.totalPoints, 100);
+  EXPECT_GT(r.totalPoints, 0);
   double regular = 0, extra = 0;
   std::set<int> tasks;
   for (const RubricItem& item : r.items) {
     (item.extraCredit ? extra : regular) += item.points;
     tasks.insert(item.task);
   }
-  EXPECT_EQ(regular, 100);
-  EXPECT_GT(extra, 0) << "the default rubric shows extra credit (bending springs, task 7)";
+  EXPECT_EQ(regular, r.totalPoints);
   EXPECT_EQ(tasks, (std::set<int>{1, 2, 3, 4, 5, 6, 7}));
   bool delayed = false;
   for (const RubricItem& item : r.items)
