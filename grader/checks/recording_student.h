@@ -34,8 +34,7 @@ class RecordingStudent final : public harness::StudentCode {
 };
 
 /// The running check's name when it is a public physics check (Task<N><Suite>.<Name>, not a
-/// Task<N>Hidden one), else "". Task 7's implicit steps are not kept (simulate); its requests
-/// for Jacobians are, for the Jacobians' part-by-part models.
+/// Task<N>Hidden one), else "".
 std::string publicCheckRunning();
 
 }  // namespace a6::grader

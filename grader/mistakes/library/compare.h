@@ -31,6 +31,23 @@ inline bool near(const Vec2& a, const Vec2& b) {
   return near(a, b, scale);
 }
 
+/// Two runs' recorded positions and velocities, each within kTolerance of b's largest value.
+inline bool sameRun(const harness::SimulateResult& a, const harness::SimulateResult& b) {
+  if (a.recordedFrames != b.recordedFrames || a.states.size() != b.states.size()) return false;
+  double scale = 0;
+  for (const auto& state : b.states) {
+    for (const Particle& p : state) scale = std::max({scale, p.x.norm(), p.v.norm()});
+  }
+  for (std::size_t k = 0; k < a.states.size(); ++k) {
+    if (a.states[k].size() != b.states[k].size()) return false;
+    for (std::size_t i = 0; i < a.states[k].size(); ++i) {
+      const Particle &p = a.states[k][i], &q = b.states[k][i];
+      if (!near(p.x, q.x, scale) || !near(p.v, q.v, scale)) return false;
+    }
+  }
+  return true;
+}
+
 /// The likeness of one answer: the mistake's and the reference's answers decide whether the
 /// request tells anything, then the student's is set beside each.
 template <class Result, class Same>

@@ -8,7 +8,7 @@ const std::vector<MistakeModel>& mistakeLibrary() {
     std::vector<MistakeModel> models;
     for (auto part : {mistakes::task1Mistakes, mistakes::task2Mistakes, mistakes::task3Mistakes,
                       mistakes::task4Mistakes, mistakes::task5Mistakes, mistakes::task6Mistakes,
-                      mistakes::partByPartMistakes}) {
+                      mistakes::task7Mistakes, mistakes::partByPartMistakes}) {
       for (MistakeModel& m : part()) models.push_back(std::move(m));
     }
     return models;

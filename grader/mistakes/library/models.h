@@ -20,6 +20,7 @@ std::vector<MistakeModel> task3Mistakes();  // time stepping
 std::vector<MistakeModel> task4Mistakes();  // cloth builder
 std::vector<MistakeModel> task5Mistakes();  // particle system
 std::vector<MistakeModel> task6Mistakes();  // Box2D joints
+std::vector<MistakeModel> task7Mistakes();  // implicit step
 /// The spring force (task 1) and springJacobians (task 7), named part by part (parts.cpp).
 std::vector<MistakeModel> partByPartMistakes();
 

@@ -83,23 +83,6 @@ std::optional<SimulateResult> simulate(const SimulateRequest& r, const StepForm&
   return out;
 }
 
-// The recorded positions and velocities, each within the tolerance of the run's largest value.
-bool same(const SimulateResult& a, const SimulateResult& b) {
-  if (a.recordedFrames != b.recordedFrames || a.states.size() != b.states.size()) return false;
-  double scale = 0;
-  for (const auto& state : b.states) {
-    for (const Particle& p : state) scale = std::max({scale, p.x.norm(), p.v.norm()});
-  }
-  for (std::size_t k = 0; k < a.states.size(); ++k) {
-    if (a.states[k].size() != b.states[k].size()) return false;
-    for (std::size_t i = 0; i < a.states[k].size(); ++i) {
-      const Particle &p = a.states[k][i], &q = b.states[k][i];
-      if (!near(p.x, q.x, scale) || !near(p.v, q.v, scale)) return false;
-    }
-  }
-  return true;
-}
-
 // One wrong form of one part of the step: its key (the model's id; a one-part form's is the
 // wrong version's it was first written from, tests/wrong/t3_<key>), what it does, and the form.
 struct WrongPart {
@@ -153,7 +136,7 @@ MistakeModel model(const std::vector<const WrongPart*>& wrong) {
   auto judge = [form](const Transcript& t) {
     return judgeEach(
         t.simulations, [](const SimulateRequest& r) { return simulate(r, StepForm{}); },
-        [form](const SimulateRequest& r) { return simulate(r, form); }, same);
+        [form](const SimulateRequest& r) { return simulate(r, form); }, sameRun);
   };
   MistakeModel m{"t3_" + key, 3, text + ".", judge};
   m.partByPart = true;
