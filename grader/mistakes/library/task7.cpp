@@ -39,9 +39,9 @@ void jacobians(const Particle& p1, const Particle& p2, const SpringData& d, Mat2
   dfdx = dfdv = Mat2::Zero();
   if (l < 1e-12) return;
   const Vec2 e = delta / l;
-  const Mat2 eeT = e * e.transpose();
-  dfdx = -d.ks * (eeT + (1 - d.restLength / l) * (Mat2::Identity() - eeT));
-  dfdv = -d.kd * eeT;
+  const Mat2 along = e * e.transpose(), across = Mat2::Identity() - along;
+  dfdx = -d.ks * (along + (1 - d.restLength / l) * across);
+  dfdv = -d.kd * along;
 }
 
 // A = M - h dfdv - h² dfdx and b = h (f + h dfdx v), each part in the form's shape.
