@@ -485,6 +485,69 @@ TEST(Task6Joints, CarDrivesForwardUprightOnItsSuspension) {
   }
 }
 
+// Joints on turned bodies --------------------------------------------------------------------
+
+// The world point and axis each builder was given, against the joint it built. In the other
+// scenes the first body is the ground or not turned, so a point or axis taken in the wrong frame
+// (a world axis stored as bodyA's, an offset not turned into the body) cannot show there.
+Vec2 toVec(const b2Vec2& v) { return Vec2(v.x, v.y); }
+// A world vector in the frame of a body turned by `angle`.
+Vec2 intoBody(const Vec2& world, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return Vec2(c * world.x() + s * world.y(), -s * world.x() + c * world.y());
+}
+
+TEST(Task6Joints, JointsOnTurnedBodiesKeepTheirWorldAnchorsAndAxes) {
+  namespace t = p::turned;
+  const Box2DResult r = runScene("turned", 1);
+  A6_ASSERT_RAN(r);
+  ASSERT_EQ(r.bodies.size(), 5u);
+  struct Expected {
+    const char* type;
+    int bodyA, bodyB;  // frame 0, slider 1, chassis 2, wheel 3, arm 4
+    Vec2 anchorA, anchorB;
+    Vec2 axis;         // world; zero: no axis
+    double angleA;     // bodyA's angle as built
+    const char* call;  // the builder, for the hint
+  };
+  const Expected expected[] = {
+      {"prismatic", 0, 1, toVec(t::kSliderAt), toVec(t::kSliderAt), toVec(t::kPistonAxis),
+       t::kFrameAngle, "createPiston(world, frame, slider, slider's position, axis, ...)"},
+      {"wheel", 2, 3, toVec(t::kWheelAt), toVec(t::kWheelAt), toVec(t::kWheelAxis),
+       t::kChassisAngle, "createWheel(world, chassis, wheel, axis, ...)"},
+      {"revolute", 0, 4, toVec(t::kHingeAt), toVec(t::kHingeAt), Vec2::Zero(), t::kFrameAngle,
+       "createHinge(world, frame, arm, anchor)"},
+      {"distance", 2, 4, toVec(t::kRopeFrom), toVec(t::kRopeTo), Vec2::Zero(), t::kChassisAngle,
+       "createRope(world, chassis, arm, anchorA, anchorB, maxLength)"},
+  };
+  const char* frames =
+      "Initialize(...) turns the world anchors and axis into each body's frame; set by hand, "
+      "use body->GetLocalPoint(worldAnchor) and bodyA->GetLocalVector(axis)";
+  for (const Expected& e : expected) {
+    const JointInfo* j = nullptr;
+    for (const JointInfo& candidate : r.builtJoints) {
+      if (candidate.type == e.type && candidate.bodyA == e.bodyA && candidate.bodyB == e.bodyB) {
+        j = &candidate;
+      }
+    }
+    if (j == nullptr) {
+      ADD_FAILURE() << currentTask() << ": no " << e.type << " joint " << bodyName(r, e.bodyA)
+                    << " - " << bodyName(r, e.bodyB) << " from " << e.call << ". "
+                    << built("turned", r);
+      continue;
+    }
+    const std::string which = std::string(e.call) + " on turned bodies built: " + describe(r, *j);
+    EXPECT_VEC_NEAR(j->anchorA, e.anchorA, inScene(1e-5)) << which << hint(frames);
+    EXPECT_VEC_NEAR(j->anchorB, e.anchorB, inScene(1e-5)) << which << hint(frames);
+    if (e.axis == Vec2::Zero()) continue;
+    const double length = j->localAxisA.norm();
+    const Vec2 axis = length > 0 ? Vec2(j->localAxisA / length) : j->localAxisA;
+    EXPECT_VEC_NEAR(axis, intoBody(e.axis, e.angleA), inScene(1e-5))
+        << which << ", the world axis " << str(e.axis) << ", bodyA turned by " << num(e.angleA)
+        << " rad" << hint(frames);
+  }
+}
+
 // Mouse joint ---------------------------------------------------------------------------------
 
 // Where the mouse_drag scene's box is after one step: a point on the box to grab.

@@ -159,6 +159,30 @@ std::unique_ptr<Box2DScene> mouseDrag() {
   return scene;
 }
 
+// Every builder once, on bodies turned away from the world's axes (box2d_params::turned): the
+// checks read the joints as built, so gravity and contacts do not matter.
+std::unique_ptr<Box2DScene> turnedScene() {
+  namespace t = turned;
+  auto scene = newScene("turned");
+  auto add = [&](const char* name, const b2Vec2& at, float angle, const b2Shape& shape) {
+    b2Body* body = addBody(*scene, name, at, shape, 5.0f);
+    body->SetTransform(at, angle);
+    return body;
+  };
+  b2Body* frame = add("frame", t::kFrameAt, t::kFrameAngle, box(0.4f, 0.1f));
+  b2Body* slider = add("slider", t::kSliderAt, t::kSliderAngle, box(0.2f, 0.1f));
+  b2Body* chassis = add("chassis", t::kChassisAt, t::kChassisAngle, box(0.6f, 0.2f));
+  b2Body* wheel = add("wheel", t::kWheelAt, t::kWheelAngle, circle(0.3f));
+  b2Body* arm = add("arm", t::kArmAt, t::kArmAngle, box(0.5f, 0.05f));
+  createPiston(*scene->world, frame, slider, t::kSliderAt, t::kPistonAxis, kPistonLower,
+               kPistonUpper, kPistonSpeed, kPistonMaxForce);
+  createWheel(*scene->world, chassis, wheel, t::kWheelAxis, kWheelHertz, kWheelDampingRatio,
+              kCarMotorSpeed, kCarMaxTorque);
+  createHinge(*scene->world, frame, arm, t::kHingeAt);
+  createRope(*scene->world, chassis, arm, t::kRopeFrom, t::kRopeTo, t::kRopeLength);
+  return scene;
+}
+
 using Builder = std::function<std::unique_ptr<Box2DScene>()>;
 
 const std::map<std::string, Builder>& registry() {
@@ -170,6 +194,7 @@ const std::map<std::string, Builder>& registry() {
       {"piston", piston},
       {"car", car},
       {"mouse_drag", mouseDrag},
+      {"turned", turnedScene},
   };
   return scenes;
 }

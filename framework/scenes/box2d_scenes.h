@@ -30,7 +30,8 @@ struct Box2DScene {
   int indexOf(const b2Body* body) const;
 };
 
-/// The names of every Box2D scene: pendulum, hanging, rope, bridge, piston, car, mouse_drag.
+/// The names of every Box2D scene: pendulum, hanging, rope, bridge, piston, car, mouse_drag, and
+/// turned (for the checks only: no picture shows it).
 const std::vector<std::string>& box2dSceneNames();
 /// Builds a scene by name (the student's joints included); nullptr for an unknown name.
 std::unique_ptr<Box2DScene> makeBox2DScene(const std::string& name);
@@ -52,6 +53,28 @@ inline constexpr float kWheelDampingRatio = 0.7f;
 inline constexpr float kCarMotorSpeed = -15.0f;  ///< rad/s (clockwise: the car drives to +x)
 inline constexpr float kCarMaxTorque = 40.0f;    ///< N·m
 inline constexpr int kBridgePlanks = 10;
+
+/// The scene "turned": one joint of each builder between bodies turned away from the world's
+/// axes and away from the origin, where a point or an axis taken in the wrong frame shows (in
+/// the other scenes the first body is the ground or unturned, so both frames agree there).
+namespace turned {
+inline const b2Vec2 kFrameAt{0.5f, 2.0f};   ///< m, the piston's and the hinge's first body
+inline constexpr float kFrameAngle = 0.6f;  ///< rad
+inline const b2Vec2 kSliderAt{1.3f, 2.4f};
+inline constexpr float kSliderAngle = -0.4f;
+inline const b2Vec2 kPistonAxis{0.6f, 0.8f};  ///< world, unit
+inline const b2Vec2 kChassisAt{-1.5f, 1.0f};  ///< the wheel's and the rope's first body
+inline constexpr float kChassisAngle = 0.35f;
+inline const b2Vec2 kWheelAt{-1.9f, 0.5f};
+inline constexpr float kWheelAngle = 0.9f;
+inline const b2Vec2 kWheelAxis{-0.28f, 0.96f};  ///< world, unit
+inline const b2Vec2 kArmAt{0.5f, 0.8f};
+inline constexpr float kArmAngle = 1.1f;
+inline const b2Vec2 kHingeAt{0.7f, 1.4f};    ///< world: frame - arm
+inline const b2Vec2 kRopeFrom{-1.2f, 1.2f};  ///< world, on the chassis
+inline const b2Vec2 kRopeTo{0.3f, 0.6f};     ///< world, on the arm
+inline constexpr float kRopeLength = 2.5f;
+}  // namespace turned
 }  // namespace box2d_params
 
 }  // namespace a6

@@ -74,6 +74,25 @@ Likeness wheelSpring(const Box2DResult& r, const JointInfo& j) {
   return shows(j.stiffness == 0 && j.damping == 0,
                close(j.stiffness, stiffnessOf(r, j, p::kWheelHertz)));
 }
+// The "turned" scene: bodyA turned by `angle`; a world vector in its frame, and the closeness of
+// two vectors.
+Vec2 intoBody(const b2Vec2& world, float angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return Vec2(c * world.x + s * world.y, -s * world.x + c * world.y);
+}
+bool closeVec(const Vec2& a, const Vec2& b) { return (a - b).norm() <= kFloat; }
+Likeness axisInWorldFrame(const Box2DResult&, const JointInfo& j) {
+  namespace t = p::turned;
+  const Vec2 world(t::kPistonAxis.x, t::kPistonAxis.y);
+  return shows(closeVec(j.localAxisA, world),
+               closeVec(j.localAxisA, intoBody(t::kPistonAxis, t::kFrameAngle)));
+}
+Likeness offsetsNotTurned(const Box2DResult&, const JointInfo& j) {
+  namespace t = p::turned;
+  const b2Vec2 offset = t::kHingeAt - t::kFrameAt;
+  return shows(closeVec(j.localAnchorA, Vec2(offset.x, offset.y)),
+               closeVec(j.localAnchorA, intoBody(offset, t::kFrameAngle)));
+}
 Likeness mouseMaxForce(const Box2DResult& r, const JointInfo& j) {
   const double mass = massOf(r, j.bodyB);
   if (close(mass, 1)) return Likeness::Uninformative;
@@ -147,6 +166,16 @@ std::vector<MistakeModel> task6Mistakes() {
       jointModel("t6_piston_no_limits", "piston", "prismatic", pistonLimits,
                  "Your piston behaves exactly like one whose limits are set but never enabled: "
                  "set enableLimit = true, or the motor drives it on forever."),
+      jointModel("t6_piston_axis_in_world_frame", "turned", "prismatic", axisInWorldFrame,
+                 "Your piston behaves exactly like one whose axis is the world axis stored as "
+                 "the first body's local axis: right only while that body is not turned; "
+                 "Initialize(ground, piston, worldAnchor, axis), or localAxisA = "
+                 "ground->GetLocalVector(axis)."),
+      jointModel("t6_hinge_anchor_offsets_not_turned", "turned", "revolute", offsetsNotTurned,
+                 "Your hinge behaves exactly like one whose local anchors are the world offsets "
+                 "from each body's centre, not turned into the body's frame: right only for "
+                 "unturned bodies; Initialize(a, b, worldAnchor), or localAnchorA = "
+                 "a->GetLocalPoint(worldAnchor)."),
       jointModel("t6_rope_rigid", "rope", "distance", ropeRigid,
                  "Your rope behaves exactly like a rigid rod: Initialize sets minLength = "
                  "maxLength = the current distance; a rope needs minLength = 0 and maxLength = "
