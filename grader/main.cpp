@@ -5,6 +5,7 @@
 //            [--quiet] [--color]
 //   a6_grade --list-tests [--rubric FILE]
 //   a6_grade --check-rubric [--rubric FILE]
+//   a6_grade --list-items [--rubric FILE]
 //
 // This file only reads the command line. The stages of a grading run in grading/grading.cpp:
 // intake -> build -> the physics suite (and the golden-image checks) run in this process
@@ -43,6 +44,7 @@ struct Options {
   std::string rubric;
   bool listTests = false;
   bool checkRubric = false;
+  bool listItems = false;
   std::string publicRubric;
 };
 
@@ -104,6 +106,9 @@ void addRunOptions(CLI::App& app, GradeOptions& options) {
 void addCommandOptions(CLI::App& app, Options& options) {
   app.add_flag("--list-tests", options.listTests,
                "print every check and the rubric item it counts for, then exit");
+  app.add_flag("--list-items", options.listItems,
+               "print each rubric item (name, points, checks, extra or regular, visibility) "
+               "and a last line: total, points, checks, extra credit; then exit");
   app.add_flag("--check-rubric", options.checkRubric,
                "check the rubric (--rubric, or the default) against every check, then exit: 0 "
                "when it can be used, 2 and each problem with its line and fix when not");
@@ -143,8 +148,9 @@ int writePublicRubric(const Rubric& rubric, const std::string& file) {
 int dispatch(const Options& options) {
   const Rubric rubric = readRubric(options.rubric);
   if (!options.publicRubric.empty()) return writePublicRubric(rubric, options.publicRubric);
-  if (options.listTests || options.checkRubric) {
+  if (options.listTests || options.checkRubric || options.listItems) {
     registerChecks(1, options.grading.filter, fs::temp_directory_path() / "a6_grade_list", false);
+    if (options.listItems) return listItems(rubric);
     return options.listTests ? listChecks(rubric) : checkRubricAgainstChecks(rubric);
   }
   if (options.grading.submission.empty() || options.grading.out.empty()) {

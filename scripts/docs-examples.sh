@@ -2,7 +2,8 @@
 # The example outputs in the docs, made from real runs so that they cannot drift:
 #
 #   scripts/docs-examples.sh            check: every example is what the programs print today
-#   scripts/docs-examples.sh --update   rewrite the examples from a fresh run
+#   scripts/docs-examples.sh --update   rewrite the examples from a fresh run, and the numbers
+#                                       in the facts and the table of weights below
 #
 # An example is a fenced block right after a marker line `<!-- example: ID -->` in README.md,
 # docs/*.md or grader/release/README.md; example_ID below makes its text. The check compares
@@ -171,7 +172,9 @@ check_examples() {
     [ "$n" -gt 0 ] || continue
     render_doc "$file" >"$scratch/new.md"
     if [ "$mode" = update ]; then
-      cmp -s "$scratch/new.md" "$file" || { cp "$scratch/new.md" "$file"; echo "updated $n examples in $file"; }
+      # (Rewritten only where more than the masked durations changed: no churn in the docs.)
+      cmp -s <(mask <"$file") <(mask <"$scratch/new.md") ||
+        { cp "$scratch/new.md" "$file"; echo "updated $n examples in $file"; }
     elif ! diff -u <(mask <"$file") <(mask <"$scratch/new.md") >"$scratch/diff"; then
       fail "$file: an example differs from what the programs print now (- the doc, + now;" \
         "scripts/docs-examples.sh --update rewrites it):"$'\n'"$(head -60 "$scratch/diff")"
@@ -183,50 +186,119 @@ check_examples() {
 
 # ---- facts in the prose ----------------------------------------------------------------------
 
-# fact FILE TEXT: FILE must contain TEXT (a sentence with the true number in it).
+# fact FILE TEMPLATE VALUE...: FILE must say TEMPLATE with each %s the value measured (a
+# sentence with the true number in it, on one line). --update writes the values in where the
+# sentence has other numbers.
 fact() {
-  if grep -qF -- "$2" "$1"; then
-    echo "ok: $1 says \"$2\""
+  local file="$1" template="$2" text
+  shift 2
+  # shellcheck disable=SC2059
+  text=$(printf "$template" "$@")
+  if grep -qF -- "$text" "$file"; then
+    echo "ok: $file says \"$text\""
+  elif [ "$mode" = update ] && TEMPLATE="$template" TEXT="$text" perl -i -pe '
+      BEGIN { $re = join "[0-9][0-9.]*", map { quotemeta } split /%s/, $ENV{TEMPLATE}, -1 }
+      $n += s/$re/$ENV{TEXT}/g; END { $? = $n ? 0 : 1 }' "$file"; then
+    echo "updated: $file now says \"$text\""
   else
-    fail "$1 should say \"$2\" (the number is measured; fix the text)"
+    fail "$file should say \"$text\" (the number is measured; fix the text)"
   fi
 }
 
+# restate FILE OLD NEW WHY: FILE says OLD where NEW is true; --update writes NEW instead.
+restate() {
+  if [ "$mode" = update ]; then
+    OLD="$2" NEW="$3" perl -i -pe 's/\Q$ENV{OLD}\E\b/$ENV{NEW}/g' "$1"
+    echo "updated: $1 now says \"$3\""
+  else
+    fail "$1 says \"$2\": $4"
+  fi
+}
+
+# The rubric as a6_grade reads it (a6_grade --list-items): ITEMS, one line per item (name,
+# points, checks, extra or regular, visibility), and its totals.
+read_rubric() {
+  ITEMS=$("$grade" --list-items 2>/dev/null | sed '$d')
+  IFS=$'\t' read -r _ TOTAL CHECKS EXTRA < <("$grade" --list-items 2>/dev/null | tail -1)
+  "$grade" --public-rubric "$scratch/public.toml"
+  IFS=$'\t' read -r _ PUBLIC_TOTAL _ PUBLIC_EXTRA < <("$grade" --list-items --rubric "$scratch/public.toml" 2>/dev/null | tail -1)
+  FULL=$(awk -v t="$TOTAL" -v e="$EXTRA" 'BEGIN { print t + e }')
+}
+
+# "N (x)" as the table of weights writes an item's checks: x its points per check, to two
+# decimals at most; just N for one check.
+share() {
+  awk -v p="$1" -v n="$2" 'BEGIN { if (n == 1) { print n; exit }
+    x = sprintf("%.3f", p / n); sub(/0+$/, "", x); sub(/\.$/, "", x); print n " (" x ")" }'
+}
+
+# docs/instructor.md's table of weights ("How the weights are set"): a row for each item worth
+# points, with the rubric's points and the number of checks it counts; --update rewrites the
+# numbers of a row that exists (a new item needs its row, and its reason, written by hand).
+check_weights() {
+  local name points checks want bad=0
+  while IFS=$'\t' read -r name points checks _; do
+    [ "$points" = 0 ] && continue
+    want="| $name | $points | $(share "$points" "$checks") |"
+    grep -qF -- "$want" docs/instructor.md && continue
+    if [ "$mode" = update ] && NAME="| $name | " WANT="$want" perl -i -pe '
+        $n += s/^\Q$ENV{NAME}\E[0-9.]+ \| [0-9]+( \([0-9.]+\))? \|/$ENV{WANT}/; END { $? = $n ? 0 : 1 }' \
+      docs/instructor.md; then
+      echo "updated: docs/instructor.md: $want"
+      continue
+    fi
+    fail "docs/instructor.md: the table of weights needs the row \"$want <why> |\" (the rubric's points and checks)"
+    bad=1
+  done <<<"$ITEMS"
+  [ "$bad" = 1 ] || echo "ok: docs/instructor.md's table of weights has the rubric's points and checks"
+}
+
 check_facts() {
-  local tests images hidden_images checks public_total golden_tests
+  local tests images hidden_images golden_tests task7
   tests=$(ctest --test-dir "$build" -N | sed -n 's/^Total Tests: //p')
   golden_tests=$(ctest --test-dir "$build" -N -L golden | sed -n 's/^Total Tests: //p')
   images=$(jq '.images | length' tests/golden/manifest.json)
   hidden_images=$(jq '.images | length' tests/golden/hidden/manifest.json)
-  checks=$("$grade" --list-tests 2>/dev/null | wc -l)
-  "$grade" --public-rubric "$scratch/public.toml"
-  public_total=$(sed -n 's/^total = \([0-9]*\)\(\.0*\)\{0,1\}$/\1/p' "$scratch/public.toml")
-  fact README.md "then runs the $tests tests"
+  task7=$("$grade" --list-tests 2>/dev/null | grep -c '^Task7Implicit\.')
+  read_rubric
+  fact README.md "then runs the %s tests" "$tests"
   # A full score or an image count the README states anywhere is today's: "solution N" is the
   # rubric's points plus its extra credit; "N + M images" the public and the hidden images.
-  local full stated
-  full=$("$grade" --check-rubric 2>&1 | sed -n 's/.*, \([0-9]*\) points + \([0-9]*\) extra credit.*/\1 + \2/p')
-  full=$((full))
+  fact README.md "The solution gets %s points and the extra credit" "$TOTAL"
+  # (Each stated number is checked, so that one stale mention among right ones shows.)
+  local stated
   for stated in $(grep -oE 'solution [0-9]+\b' README.md | awk '{ print $2 }' | sort -u); do
-    [ "$stated" = "$full" ] || fail "README.md says \"solution $stated\": the solution's score is $full"
+    [ "$stated" = "$FULL" ] || restate README.md "solution $stated" "solution $FULL" \
+      "the solution's score is $FULL"
   done
-  for stated in $(grep -oE '\b[0-9]+ \+ [0-9]+ images' README.md | tr -d ' ' | sort -u); do
-    [ "$stated" = "$images+${hidden_images}images" ] ||
-      fail "README.md says \"$stated\": there are $images public and $hidden_images hidden images"
+  for stated in $(grep -oE '\b[0-9]+ \+ [0-9]+ images' README.md | sort -u | tr ' ' '_'); do
+    [ "${stated//_/ }" = "$images + $hidden_images images" ] || restate README.md "${stated//_/ }" \
+      "$images + $hidden_images images" "there are $images public and $hidden_images hidden images"
   done
-  fact README.md "apt-get: the $(bash scripts/install-deps.sh | sed -n 's/.*all \([0-9]*\) packages.*/\1/p') packages it names"
-  fact README.md "\`out/$(sed -n 's|.*export-student.sh out/\([a-z-]*\) --zip.*|\1|p' scripts/main.sh).zip\`"
+  fact README.md "apt-get: the %s packages it names" \
+    "$(bash scripts/install-deps.sh | sed -n 's/.*all \([0-9]*\) packages.*/\1/p')"
   local release
   release=$(sed -n 's|.*export-student.sh out/\([a-z-]*\) --zip.*|\1|p' scripts/main.sh)
+  fact README.md "\`out/$release.zip\`"
   fact README.md "\`unzip $release.zip && cd"
   fact grader/release/README.md "\`unzip $release.zip && cd $release\`"
-  fact README.md "the quick tier, its $(ctest --test-dir "$build" -N -L quick | sed -n 's/^Total Tests: //p') tests"
-  fact docs/instructor.md "the $images public images"
-  fact docs/instructor.md "the $hidden_images hidden ones"
-  fact docs/instructor.md "(total $public_total instead of 100)"
-  fact docs/instructor.md "all $checks checks"
-  fact docs/rendering.md "holds $images reference images"
-  fact docs/rendering.md "($golden_tests ctest tests"
+  fact README.md "the quick tier, its %s tests" "$(ctest --test-dir "$build" -N -L quick | sed -n 's/^Total Tests: //p')"
+  fact docs/instructor.md "the %s public images" "$images"
+  fact docs/instructor.md "the %s hidden ones" "$hidden_images"
+  fact docs/instructor.md "(total %s instead of %s)" "$PUBLIC_TOTAL" "$TOTAL"
+  fact docs/instructor.md "all %s checks" "$CHECKS"
+  fact docs/instructor.md "gives %s points and %s of extra credit" "$TOTAL" "$EXTRA"
+  fact docs/instructor.md "a perfect submission with the default rubric gets %s on Gradescope" "$FULL"
+  fact docs/instructor.md "In the default rubric its %s checks" "$task7"
+  fact docs/instructor.md "on the starter (0 / %s," "$PUBLIC_TOTAL"
+  fact docs/instructor.md "on the solution (%s / %s + %s extra credit)" "$PUBLIC_TOTAL" "$PUBLIC_TOTAL" "$PUBLIC_EXTRA"
+  fact docs/instructor.md "Give it %s points (the rubric's \`total\`" "$TOTAL"
+  fact docs/instructor.md "Expect **%s** (%s points and %s of extra credit)" "$FULL" "$TOTAL" "$EXTRA"
+  fact docs/instructor.md "Scores with the default rubric (%s points + %s extra credit" "$TOTAL" "$EXTRA"
+  fact docs/handout.md "Its rubric holds the public checks (%s points)" "$PUBLIC_TOTAL"
+  fact docs/rendering.md "holds %s reference images" "$images"
+  fact docs/rendering.md "(%s ctest tests" "$golden_tests"
+  check_weights
   check_costs
 }
 
@@ -239,9 +311,9 @@ check_costs() {
   suite=$(sed -n 's/^| its tests, ctest -j2, wall clock | \([0-9.]*\) |$/\1/p' docs/test-costs.md)
   all=$(sed -n "s/^| the README's test command (scripts\/test.sh: configure, build, tests) | \([0-9]*\) |$/\1/p" \
     docs/test-costs.md)
-  fact README.md "$ci s for .ci/run"
-  fact README.md "$all s for scripts/test.sh"
-  fact README.md "$suite s for the tests"
+  fact README.md "%s s for .ci/run" "$ci"
+  fact README.md "%s s for scripts/test.sh" "$all"
+  fact README.md "%s s for the tests" "$suite"
   listed=$(sed -n 's/^| `\([^`]*\)` | [0-9.]* | [a-z]* |$/\1/p' docs/test-costs.md | sort)
   if [ "$listed" = "$(ctest --test-dir "$build" -N | sed -n 's/^ *Test *#[0-9]*: //p' | sort)" ]; then
     echo "ok: docs/test-costs.md has a row for each ctest entry"
@@ -266,9 +338,7 @@ check_handout_images() {
 }
 
 check_examples
-if [ "$mode" = check ]; then
-  check_facts
-  check_handout_images
-fi
+check_facts
+[ "$mode" = update ] || check_handout_images
 [ "$failures" -eq 0 ] || { echo "docs-examples: $failures problems" >&2; exit 1; }
 echo "docs-examples: all true"

@@ -18,6 +18,10 @@
 #       (each problem with its line and the fix, before anything runs), then grades the
 #       solution and the starter with it: full marks and nothing.
 #
+# Each job that changes what the docs quote (the rubric's numbers, the checks, the images) ends by
+# rewriting the docs' generated examples and counts (scripts/docs-examples.sh --update), and
+# lists the files it changed for you to read and commit with your own change.
+#
 # Exit status: 0 when the job is done and checked, 1 when a check failed, 2 for a bad command
 # or a rubric that cannot be used. The build folder is build/ (the default preset), or
 # $A6_BUILD_DIR; the outputs go to out/instructor/, or $A6_INSTRUCTOR_OUT.
@@ -112,6 +116,75 @@ grade_both() {
   done
 }
 
+# Every file that differs from the last commit (tracked and changed, or new), with a hash of its
+# content: what a job changed is what differs between two of these.
+worktree_state() {
+  git ls-files -m -o --exclude-standard -z -- . ':!out' ':!build' 2>/dev/null |
+    xargs -0 -r sha1sum 2>/dev/null | sort -k2
+}
+
+# changed_since STATE: the files a job changed since STATE (worktree_state's), one per line.
+changed_since() {
+  join -1 2 -2 2 -a 2 -o 2.2,1.1,2.1 <(printf '%s\n' "$1" | sed '/^$/d') <(worktree_state) |
+    awk '$2 != $3 { print $1 }'
+}
+
+# say_changed STATE: names what the job changed, for the TA to read and commit.
+say_changed() {
+  local changed
+  changed="$(changed_since "$1")"
+  if [ -z "$changed" ]; then
+    echo "files this job changed: none"
+  else
+    echo "files this job changed (read the diff, then commit them with your change):"
+    sed 's/^/  /' <<<"$changed"
+  fi
+}
+
+# update_docs: rebuilds what scripts/docs-examples.sh runs, rewrites the docs' examples and
+# counts from it, then checks them all; 1 when something is still untrue (a new rubric item's
+# row in the table of weights, a cost a clean CI run must measure: the check says which).
+update_docs() {
+  echo "=== the docs' examples and counts ==="
+  rebuild a6_grade a6_batch a6_tests_starter a6_graded_wrong_t1_wrong_sign >/dev/null || return 1
+  local log="$build/instructor-docs.log"
+  A6_BUILD_DIR="$build" bash scripts/docs-examples.sh --update >"$log" 2>&1
+  grep -E '^updated' "$log" || echo "every example and count was already true"
+  if ! A6_BUILD_DIR="$build" bash scripts/docs-examples.sh >"$log" 2>&1; then
+    grep -E '^docs-examples: ' "$log" | head -20
+    echo "instructor: some docs are still untrue (above; whole log: $log)"
+    return 1
+  fi
+  echo "the docs' examples and counts are true"
+}
+
+# keep_unchanged_replays NEW COMMITTED: moves NEW's replays into COMMITTED, except where the
+# committed file already holds the same run (the same frames and packed positions, energies
+# within 1e-9): that file stays as it is, byte for byte, so that re-rendering leaves the
+# replays of untouched scenes alone.
+keep_unchanged_replays() {
+  local new="$1" committed="$2" file name kept=0 written=0
+  mkdir -p "$committed"
+  for file in "$new"/*.json; do
+    name="$(basename "$file")"
+    if [ -f "$committed/$name" ] && jq -e -n --slurpfile a "$committed/$name" --slurpfile b "$file" '
+        def abs: if . < 0 then -. else . end;
+        def close: (.[0] - .[1] | abs) <= 0.000000001 * (1 + (.[0] | abs));
+        ($a[0] | del(.energy)) == ($b[0] | del(.energy))
+        and ($a[0].energy | length) == ($b[0].energy | length)
+        and ([$a[0].energy, $b[0].energy] | transpose
+             | all(.[0] as $x | .[1] as $y | ($x | length) == ($y | length)
+                   and ([$x, $y] | transpose | all(close))))' \
+      >/dev/null 2>&1; then
+      kept=$((kept + 1))
+    else
+      cp "$file" "$committed/$name"
+      written=$((written + 1))
+    fi
+  done
+  echo "reference replays: $((kept + written)) scenes, $written written to $committed, $kept the same run as committed (left as they were)"
+}
+
 job_rerender() {
   local into=""
   while [ $# -gt 0 ]; do
@@ -121,6 +194,8 @@ job_rerender() {
     esac
   done
   command -v jq >/dev/null || { echo "instructor: jq is missing (scripts/install-deps.sh)"; return 1; }
+  local state
+  state="$(worktree_state)"
   echo "=== 1. rebuild what depends on the scenes (everything that changed) ==="
   rebuild || return 1
   [ -x "$build/framework/render/a6_render_solution" ] ||
@@ -131,14 +206,15 @@ job_rerender() {
   if [ -d tests/golden/hidden ]; then
     rerender_set tests/golden/hidden "${into:-tests/golden}/hidden" || status=1
   fi
+  local fresh="$build/instructor-replays"
+  rm -rf "$fresh"
   if ! "$build/framework/render/a6_render_solution" --replays \
-    --out "${into:-tests/golden}/replays" >"$build/instructor-replays.log" 2>&1; then
+    --out "$fresh" >"$build/instructor-replays.log" 2>&1; then
     tail -5 "$build/instructor-replays.log"
     echo "instructor: the reference replays could not be written"
     status=1
   else
-    echo "reference replays: $(grep -c '\.json' "$build/instructor-replays.log") scenes" \
-      "written to ${into:-tests/golden}/replays"
+    keep_unchanged_replays "$fresh" "${into:-tests/golden}/replays"
   fi
   [ -n "$into" ] || stale_descriptions
   if [ -n "$into" ]; then
@@ -153,17 +229,27 @@ job_rerender() {
     echo "instructor: golden tests failed (whole log: $build/instructor-golden.log)"
     status=1
   fi
-  echo "next: look at each changed image, then: git add tests/golden && git commit;" \
-    "scripts/main.sh re-exports the student release and the Gradescope zip"
+  update_docs || status=1
+  say_changed "$state"
+  echo "next: look at each changed image, then commit; scripts/main.sh re-exports the student" \
+    "release and the Gradescope zip"
   return "$status"
+}
+
+# The hidden checks the last commit declares (TEST(Task<N>Hidden, Name) in tests/hidden/), as
+# Suite.Name, sorted: what "new" is measured against, whatever was built in between.
+committed_hidden_checks() {
+  git ls-tree -r --name-only HEAD -- tests/hidden 2>/dev/null | grep '_test\.cpp$' |
+    while read -r file; do git show "HEAD:$file"; done |
+    sed -n 's/^TEST(\(Task[0-9]Hidden\), *\([A-Za-z0-9_]*\)).*/\1.\2/p' | sort
 }
 
 job_hidden_check() {
   [ $# -eq 0 ] || usage
-  local before after
+  local before after state
+  state="$(worktree_state)"
   before="$(mktemp)" after="$(mktemp)"
-  [ -x "$build/grader/a6_grade" ] && "$build/grader/a6_grade" --list-tests 2>/dev/null |
-    grep -E '^Task[0-9]Hidden\.' | sort >"$before"
+  committed_hidden_checks >"$before"
   echo "=== 1. rebuild a6_grade and the suite with tests/hidden/ ==="
   # Configured again: the hidden folder's *_test.cpp files are found when configuring.
   configure && cmake "$build" >/dev/null || return 1
@@ -172,7 +258,7 @@ job_hidden_check() {
   echo "=== 2. the hidden checks and their rubric items ==="
   local added
   added="$(comm -13 <(cut -f1 "$before") <(cut -f1 "$after"))"
-  echo "$(wc -l <"$after") hidden checks; new since the last build: ${added:-none}"
+  echo "$(wc -l <"$after") hidden checks; new since the last commit: ${added:-none}"
   sed 's/\t/  ->  /; s/^/  /' "$after"
   local status=0
   if grep -q $'\t-$' "$after"; then
@@ -206,12 +292,15 @@ job_hidden_check() {
   else
     echo "the starter fails every one"
   fi
+  update_docs || status=1
+  say_changed "$state"
   return "$status"
 }
 
 job_rubric() {
   [ $# -le 1 ] || usage
-  local rubric="${1:-grader/rubric.toml}"
+  local rubric="${1:-grader/rubric.toml}" state
+  state="$(worktree_state)"
   echo "=== 1. the rubric against every check ==="
   rebuild a6_grade >/dev/null || return 1
   "$build/grader/a6_grade" --check-rubric --rubric "$rubric" || return 2
@@ -233,8 +322,13 @@ job_rubric() {
     echo "instructor: the starter earns points with this rubric"
     status=1
   fi
-  [ "$rubric" -ef grader/rubric.toml ] ||
-    echo "note: a6_grade uses grader/rubric.toml unless given --rubric: copy $rubric there to make it the default"
+  if [ "$rubric" -ef grader/rubric.toml ]; then
+    update_docs || status=1  # the docs quote the default rubric's numbers
+    say_changed "$state"
+  else
+    echo "note: a6_grade uses grader/rubric.toml unless given --rubric: copy $rubric there to make" \
+      "it the default (then this job updates the docs' numbers too)"
+  fi
   echo "next: scripts/main.sh re-exports the student release (its public rubric) and the Gradescope zip"
   return "$status"
 }

@@ -236,6 +236,27 @@ int listChecks(const Rubric& rubric) {
   return problems.empty() ? 0 : 1;
 }
 
+int listItems(const Rubric& rubric) {
+  if (!rubric.ok()) {
+    std::fprintf(stderr, "a6_grade: the rubric is invalid:\n%s\n", rubric.error.c_str());
+    return 1;
+  }
+  std::vector<int> counted(rubric.items.size(), 0);
+  for (const std::string& name : registeredChecks()) {
+    const int item = rubric.itemFor(name);
+    if (item >= 0) ++counted[static_cast<std::size_t>(item)];
+  }
+  double extra = 0;
+  for (std::size_t i = 0; i < rubric.items.size(); ++i) {
+    const RubricItem& item = rubric.items[i];
+    if (item.extraCredit) extra += item.points;
+    std::printf("%s\t%g\t%d\t%s\t%s\n", item.name.c_str(), item.points, counted[i],
+                item.extraCredit ? "extra" : "regular", toString(item.visibility));
+  }
+  std::printf("total\t%g\t%zu\t%g\n", rubric.totalPoints, registeredChecks().size(), extra);
+  return 0;
+}
+
 int checkRubricAgainstChecks(const Rubric& rubric) {
   if (!rubric.ok()) {
     std::fprintf(stderr, "a6_grade: the rubric is invalid:\n%s\n", rubric.error.c_str());

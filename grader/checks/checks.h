@@ -50,6 +50,12 @@ int listChecks(const Rubric& rubric);
 /// --check-rubric: 0 and a one-line summary when the rubric can be used; 2 and each problem
 /// (place and fix) when not.
 int checkRubricAgainstChecks(const Rubric& rubric);
+/// `a6_grade --list-items`: one line per rubric item, tab-separated: name, points, how many of
+/// the registered checks count for it, "extra" or "regular", its visibility; then a line
+/// "total", the rubric's total, the number of checks, the extra credit's points. For scripts
+/// and tests that must read the rubric's numbers rather than pin them. 0, or 1 when the rubric
+/// is invalid.
+int listItems(const Rubric& rubric);
 
 /// The probes the checks run against, and what they may see.
 struct ChecksInput {

@@ -56,9 +56,7 @@ score_of() { grep -m1 '"score"' "$1" 2>/dev/null | tr -dc '0-9.'; }
 solution=$(score_of out/solution/results.json) starter=$(score_of out/starter/results.json)
 # The rubric's points and extra credit as the grader reads them (not pinned: an instructor's
 # rubric has its own).
-checked=$(build/grader/a6_grade --check-rubric 2>&1)
-points=$(printf '%s\n' "$checked" | sed -n 's/.* \([0-9.]*\) points.*/\1/p' | head -1)
-extra=$(printf '%s\n' "$checked" | sed -n 's/.* \([0-9.]*\) extra credit.*/\1/p' | head -1)
+IFS=$'\t' read -r _ points _ extra < <(build/grader/a6_grade --list-items 2>/dev/null | tail -1)
 awk -v s="$solution" -v p="${points:-0}" -v e="${extra:-0}" 'BEGIN { exit !(s != "" && s == p + e) }' ||
   fail "the solution scored '$solution', not ${points:-?} + ${extra:-0} (the rubric's points and its extra credit)"
 points=$(printf '%.2f' "${points:-0}") extra=$(printf '%.2f' "${extra:-0}")

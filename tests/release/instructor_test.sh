@@ -35,8 +35,7 @@ check() {
 }
 
 # The rubric's points as the grader reads them (an instructor's rubric has its own: not pinned).
-points=$("$build/grader/a6_grade" --check-rubric --rubric "$root/grader/rubric.toml" 2>&1 |
-  sed -n 's/.* \([0-9.]*\) points.*/\1/p' | head -1)
+IFS=$'\t' read -r _ points _ < <("$build/grader/a6_grade" --list-items --rubric "$root/grader/rubric.toml" 2>/dev/null | tail -1)
 points=$(printf '%.2f' "${points:-0}")
 check "the default rubric is valid, full marks and nothing" 0 \
   "valid: " "total  " "$points / $points" "the starter scores 0" -- rubric

@@ -231,10 +231,8 @@ as_student bash scripts/check.sh >"$work/check_starter.log" 2>&1 || { cat "$work
   fail "the starter scored $(score_of out/check/results.json) in the local check"
 # The public rubric's points and extra credit, as the release's own grader reads them (an
 # instructor's rubric has its own: the test reads them, it does not pin them).
-checked=$(build/grader/a6_grade --check-rubric --rubric grader/rubric.toml 2>&1)
-points=$(printf '%s\n' "$checked" | sed -n 's/.* \([0-9.]*\) points.*/\1/p' | head -1)
-extra=$(printf '%s\n' "$checked" | sed -n 's/.* \([0-9.]*\) extra credit.*/\1/p' | head -1)
-[ -n "$points" ] || fail "a6_grade --check-rubric on the public rubric says no points: $checked"
+IFS=$'\t' read -r _ points _ extra < <(build/grader/a6_grade --list-items --rubric grader/rubric.toml 2>&1 | tail -1)
+[ -n "$points" ] || fail "a6_grade --list-items on the public rubric gives no total"
 points=$(printf '%.2f' "${points:-0}") extra=$(printf '%.2f' "${extra:-0}")
 grep -q "total *0.00 / $points" "$work/check_starter.log" ||
   fail "check.sh's summary does not say 0 / $points"
