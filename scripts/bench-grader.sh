@@ -3,10 +3,10 @@
 #
 #   scripts/bench-grader.sh [BUILD] [--write]      (BUILD: a configured build tree; default build)
 #
-#   (a) a6_grade on the solution's six files, with the framework and the grader's kit prebuilt
+#   (a) a6_grade on the solution's seven files, with the framework and the grader's kit prebuilt
 #       (median of 3); also with no checks at all (--tests '-*': intake, per-file compiles, link,
 #       the probe's start-up check, the report), to split the time;
-#   (b) a fresh CMake configure + build of the a6_tests target for the same six files
+#   (b) a fresh CMake configure + build of the a6_tests target for the same seven files
 #       (-DA6_STUDENT=<a copy of solution/>, no wrong versions, no benchmarks, no grader), then
 #       `ctest -R physics`: median of 3, or one run when it takes over a minute.
 # Prints both and their ratio; --write also records them in tests/bench/results/grader.json.
@@ -104,7 +104,7 @@ if [ "$write" = 1 ]; then
   out=tests/bench/results/grader.json
   cat >"$out" <<EOF
 {
-  "what": "seconds to grade the solution with a6_grade (framework and kit prebuilt) vs. a fresh CMake configure + build of a6_tests + ctest -R physics for the same six files (scripts/bench-grader.sh)",
+  "what": "seconds to grade the solution with a6_grade (framework and kit prebuilt) vs. a fresh CMake configure + build of a6_tests + ctest -R physics for the same seven files (scripts/bench-grader.sh)",
   "date": "$(date -u +%Y-%m-%dT%H:%M:%SZ)",
   "machine": {"nproc": $(nproc), "cpu": "$cpu", "compiler": "$compiler"},
   "a6_grade": {"runs": $(json_list "${grade_runs[@]}"), "median": $grade_median},

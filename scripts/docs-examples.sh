@@ -337,7 +337,21 @@ check_handout_images() {
   [ "$bad" = 1 ] || echo "ok: docs/handout.md describes every reference image as the manifest does"
 }
 
+# Words that went stale once: the task files are seven (framework/harness/task_files.h), and no
+# doc, comment or message may say six (the bench results record what was measured then).
+check_words() {
+  local stale
+  stale=$(git ls-files -z -- . ':!tests/wrong' ':!tests/bench/results' ':!docs/test-costs.md' 2>/dev/null |
+    xargs -0 grep -nIiE '\bsix (task |student |\.cpp |`\.cpp` )?(files|objects)\b' 2>/dev/null)
+  if [ -n "$stale" ]; then
+    fail "these count the task files as six; there are seven:"$'\n'"$stale"
+  else
+    echo "ok: nothing counts the task files as six"
+  fi
+}
+
 check_examples
+check_words
 check_facts
 [ "$mode" = update ] || check_handout_images
 [ "$failures" -eq 0 ] || { echo "docs-examples: $failures problems" >&2; exit 1; }

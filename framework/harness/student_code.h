@@ -2,7 +2,7 @@
 //
 // Design note: why an interface.
 // The physics suite is written once against this class. Students run it in-process (the
-// test binary links their six files: fast, and a debugger works). The grader runs the same
+// test binary links their seven files: fast, and a debugger works). The grader runs the same
 // suite against a probe process that links the student's files and answers these requests
 // over a pipe, so student code never runs in the process that decides the grade. Hence every
 // request and result is plain data (no pointers, no callbacks): it must serialise.
@@ -243,7 +243,7 @@ class StudentCode {
   }
 };
 
-/// The in-process implementation: calls the six files linked into this binary. `reference`
+/// The in-process implementation: calls the seven files linked into this binary. `reference`
 /// is the force model used for requests that ask for referenceForces (empty: the student's).
 std::unique_ptr<StudentCode> makeInProcess(ForceModel reference = {});
 

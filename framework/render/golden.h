@@ -48,7 +48,7 @@ struct GoldenImage {
   std::vector<int> tasks;    ///< every task whose code produced the image
   std::string shows;         ///< one line: what the picture shows
   std::string hint;          ///< what to check when it differs
-  std::string studentFiles;  ///< which six files rendered the baselines ("solution")
+  std::string studentFiles;  ///< which seven files rendered the baselines ("solution")
   std::string renderer;      ///< GL_RENDERER and GL_VERSION the primary baseline came from
   std::vector<std::string> baselines;  ///< approved PNGs, relative to the manifest's folder;
                                        ///< the first is the primary one (re-rendered by

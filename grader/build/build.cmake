@@ -1,4 +1,4 @@
-# Build (build/): the six task files to a linked probe, each file compiled alone in the sandbox
+# Build (build/): the seven task files to a linked probe, each file compiled alone in the sandbox
 # (a6_build), and the kit the build links against (a6_grader_kit, described by
 # BUILD/grader/kit.json). Takes a6_sandbox and the probe's link line (probe/probe.cmake).
 #
@@ -8,7 +8,7 @@
 #   pch/a6_pch.h(.gch)    Eigen/Core and the standard headers the a6 headers use, precompiled
 #                         with the kit's flags and force-included (-include): a compile takes a
 #                         quarter of the time
-#   starter/<task>.o      the starter's six objects (a missing or broken task file falls back)
+#   starter/<task>.o      the starter's seven objects (a missing or broken task file falls back)
 #   starter/<task>.syms   the symbols each defines, demangled (to tell which task a link error
 #                         about an undefined symbol belongs to)
 # The probe's main object and libraries stay where probe/probe.cmake builds them (its
@@ -133,7 +133,7 @@ if(A6_HAVE_SOLUTION)
   endforeach()
 endif()
 
-# What the probe links besides the student's six objects (probe/probe.cmake's link line).
+# What the probe links besides the student's seven objects (probe/probe.cmake's link line).
 set(A6_KIT_PROBE_MAIN ${A6_PROBE_LINK_MAIN})
 set(A6_KIT_MODELS_MAIN ${A6_PROBE_LINK_MODELS_MAIN})
 set(A6_KIT_LINK_INPUTS ${A6_PROBE_LINK_LIBRARIES})

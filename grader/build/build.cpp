@@ -266,7 +266,7 @@ Kit loadKit(const fs::path& kitJson) {
 namespace {
 using ToolRunner = std::function<Exit(const fs::path& dir, std::vector<std::string> argv)>;
 
-// As grader/probe/probe.cmake links: main, the six objects in task order, the libraries; the
+// As grader/probe/probe.cmake links: main, the seven objects in task order, the libraries; the
 // result stripped (no symbol table to search for what the framework holds).
 std::vector<std::string> linkCommand(const Kit& kit, const std::vector<std::string>& main,
                                      const std::vector<fs::path>& objects, const std::string& out) {

@@ -24,7 +24,7 @@ struct Kit {
   std::vector<std::string> modelsMain;    ///< the same main, asking the grader for the
                                           ///< reference forces: the second probe's
                                           ///< (Build::modelsProbe)
-  std::vector<std::string> linkInputs;    ///< after the six task objects: the probe kit
+  std::vector<std::string> linkInputs;    ///< after the seven task objects: the probe kit
                                           ///< library, Box2D, libseccomp
   std::filesystem::path starterObjects;   ///< folder with <task>.o (and <task>.syms: its
                                           ///< defined symbols, demangled) of the starter

@@ -59,7 +59,7 @@ fs::path enterableScratch() {
   return name;
 }
 
-// The default seed: a hash of the six files taken, so the same submission always gets the same
+// The default seed: a hash of the seven files taken, so the same submission always gets the same
 // inputs and a different one cannot know its own in advance.
 std::uint64_t seedOf(const std::map<std::string, fs::path>& files) {
   Fnv1a h;  // the names and texts run together, without separators
@@ -227,7 +227,7 @@ void Grading::prepareWork() {
   if (ec) fail("cannot create " + work_.string() + ": " + ec.message());
 }
 
-// 1. Intake: the six task files, or why there is nothing to grade.
+// 1. Intake: the seven task files, or why there is nothing to grade.
 std::optional<int> Grading::intake() {
   try {
     report_.intake = takeSubmission(options_.submission, work_ / "src");

@@ -3,9 +3,9 @@
 // Intake notes
 // ------------
 // A submission is untrusted data. We never extract anything: the archive (or the folder) is
-// read entry by entry, only entries whose file name is one of the six task files are read, into
+// read entry by entry, only entries whose file name is one of the seven task files are read, into
 // memory, with a size cap, and at the end the chosen copies are written under `dest` with names
-// we choose (the six known names). Nothing a submission names can make us write elsewhere, so
+// we choose (the seven known names). Nothing a submission names can make us write elsewhere, so
 // '..', absolute paths, links and devices are only reported, never acted on.
 //
 // Several copies of a task file: the shallowest wins (Gradescope puts the files at the root of
@@ -638,7 +638,7 @@ Intake readArchive(const fs::path& submission, const fs::path& dest, const Intak
   if (isTaskFile(submission.filename().string())) return readLoneFile(submission, dest, limits);
   return refused("cannot read the submission " + submission.string() +
                  ": it is neither a folder nor a zip or tar archive (" + openError +
-                 "); submit a folder, a .zip, a .tar or a .tar.gz with the six .cpp files");
+                 "); submit a folder, a .zip, a .tar or a .tar.gz with the seven .cpp files");
 }
 
 // ---- folders (std::filesystem, links never followed) ----

@@ -34,10 +34,10 @@ struct IntakeLimits {
   int maxDepth = 32;                      ///< path components; deeper files are skipped
 };
 
-/// Copies the six task files of `submission` (folder, .zip, .tar, .tar.gz, .tgz, .tar.bz2,
+/// Copies the seven task files of `submission` (folder, .zip, .tar, .tar.gz, .tgz, .tar.bz2,
 /// .tar.xz; detected by content, not name; or one task file on its own) into `dest` (created;
 /// stale task files there are removed; files 0644, dest 0755). Nothing is extracted: task
-/// files are read into memory, and only the six known names are ever written, into dest.
+/// files are read into memory, and only the seven known names are ever written, into dest.
 ///
 /// A task file is taken by its exact name at any depth. When a name occurs more than once, the
 /// shallowest copy wins (ties: the path that sorts first) and the others are noted. Refused,

@@ -1,4 +1,4 @@
-// The probe: the six student files, the framework and this main, linked into one executable
+// The probe: the seven student files, the framework and this main, linked into one executable
 // that the grader starts in its sandbox. It reads requests on fd 3 and answers on fd 4, each a
 // length-prefixed JSON message (framework/harness/wire.h), until fd 3 ends.
 //

@@ -1,4 +1,4 @@
-// The golden tests' main for the in-process build: the student's six files are linked into this
+// The golden tests' main for the in-process build: the student's seven files are linked into this
 // binary.
 #include <memory>
 

@@ -1029,7 +1029,7 @@ TEST(Batch, ACanvasDownloadIsRecognised) {
   const fs::path dir = caseDir("canvas");
   const fs::path in = dir / "download";
   fs::create_directories(in);
-  // doejane uploads the six files one by one; spring.cpp twice (the starter's first).
+  // doejane uploads the seven files one by one; spring.cpp twice (the starter's first).
   int id = 5000;
   for (const std::string& file : kTaskFiles) {
     fs::copy_file(kSource / "solution" / file,
@@ -1069,7 +1069,7 @@ TEST(Batch, ACanvasDownloadIsRecognised) {
             readAll(kSource / "solution" / "spring.cpp"));
   const auto* john = g.row("smithjohn");
   ASSERT_NE(john, nullptr);
-  EXPECT_EQ(john->at("status"), "graded") << "the zip's six files were read: " << describe(*john);
+  EXPECT_EQ(john->at("status"), "graded") << "the zip's seven files were read: " << describe(*john);
   EXPECT_DOUBLE_EQ(pointsOf(*john, "total"), 0);
   const auto* ann = g.row("leeann");
   ASSERT_NE(ann, nullptr);

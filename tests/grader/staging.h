@@ -81,7 +81,7 @@ inline std::vector<std::string> omittedBy(const std::string& fixture) {
   return {};
 }
 
-/// A submission folder: the solution's six files, the starter's for the tasks in `starter`,
+/// A submission folder: the solution's seven files, the starter's for the tasks in `starter`,
 /// then the fixture's task files over them (a link stays a link, made absolute), without
 /// `omit`. Throws when the fixture does not exist.
 inline fs::path stage(const fs::path& dir, const std::string& fixture,
@@ -113,7 +113,7 @@ inline fs::path stage(const fs::path& dir, const std::string& fixture,
 // ---- wrong versions -----------------------------------------------------------------------------
 
 // Variants of the solution: tests/wrong/<name>/ and tests/alternative/<name>/ each hold some of
-// the six files, to be graded in place of the solution's.
+// the seven files, to be graded in place of the solution's.
 
 /// The folders under tests/<kind>/ (sorted) that hold `marker` ("" for any folder).
 inline std::vector<std::string> variants(const std::string& kind, const std::string& marker) {
@@ -128,7 +128,7 @@ inline std::vector<std::string> variants(const std::string& kind, const std::str
   return names;
 }
 
-/// The folder tests/<kind>/<name> is graded as: the solution's six files, its own in their place.
+/// The folder tests/<kind>/<name> is graded as: the solution's seven files, its own in their place.
 inline fs::path stageVariant(const fs::path& dir, const std::string& kind,
                              const std::string& name) {
   fs::create_directories(dir);

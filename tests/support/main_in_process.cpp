@@ -1,4 +1,4 @@
-// The physics suite's main for the in-process build: the student's six files are linked into
+// The physics suite's main for the in-process build: the student's seven files are linked into
 // this binary. At the end it prints a summary per task (summary.h), which the starter and
 // wrong-version checks read.
 #include <gtest/gtest.h>
