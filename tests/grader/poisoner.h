@@ -1,7 +1,8 @@
 // What poisoned the next grading before the process layer (grader/sandbox/process.h): a process of
 // the sandbox's user in a session of its own, named with a newline (which a line-by-line reader of
 // /proc/PID/stat skips), with a child of the same kind, sending SIGKILL to every process of its
-// user but the other of the two in a loop. Started as root; the caller reaps the pid it returns.
+// user but the other of the two in a loop. Started as root; the caller kills and reaps the pid it
+// returns, and the child dies with it.
 #pragma once
 
 #include <fcntl.h>
@@ -48,11 +49,15 @@ inline pid_t startPoisoner(uid_t uid) {
     }
     setsid();
     prctl(PR_SET_NAME, "a6\nx", 0, 0, 0);
+    const pid_t parent = getpid();
     const pid_t child = fork();
     pid_t spare = child;  // each spares the other
     if (child == 0) {
       prctl(PR_SET_NAME, "a6\ny", 0, 0, 0);
-      spare = getppid();
+      // It ends with its parent, which the caller ends: never a poisoner left for the next test.
+      prctl(PR_SET_PDEATHSIG, SIGKILL, 0, 0, 0);
+      if (getppid() != parent) _exit(0);
+      spare = parent;
     }
     for (;;) {
       killAllBut(spare);
