@@ -3,7 +3,8 @@
 #
 #   scripts/docs-examples.sh            check: every example is what the programs print today
 #   scripts/docs-examples.sh --update   rewrite the examples from a fresh run, and the numbers
-#                                       in the facts and the table of weights below
+#                                       in the facts and the table of weights below; then
+#                                       exit 1 if anything is still untrue
 #
 # An example is a fenced block right after a marker line `<!-- example: ID -->` in README.md,
 # docs/*.md or grader/release/README.md; example_ID below makes its text. The check compares
@@ -187,21 +188,30 @@ check_examples() {
 # ---- facts in the prose ----------------------------------------------------------------------
 
 # fact FILE TEMPLATE VALUE...: FILE must say TEMPLATE with each %s the value measured (a
-# sentence with the true number in it, on one line). --update writes the values in where the
-# sentence has other numbers.
+# sentence with the true number in it, on one line), and every sentence of that form in FILE must
+# have the true numbers (one stale copy beside a right one fails). --update writes the values in
+# where the sentences have other numbers, unless no_update=1 (a fact of this machine, such as the
+# packages it installs).
 fact() {
-  local file="$1" template="$2" text
+  local file="$1" template="$2" text value stale
   shift 2
+  for value in "$@"; do
+    [[ "$value" =~ ^[0-9][0-9.]*$ ]] ||
+      { fail "$file: \"$template\": the measured value '$value' is no number (a run above failed)"; return; }
+  done
   # shellcheck disable=SC2059
   text=$(printf "$template" "$@")
-  if grep -qF -- "$text" "$file"; then
+  stale=$(TEMPLATE="$template" TEXT="$text" perl -ne '
+      BEGIN { $re = join "[0-9][0-9.]*", map { quotemeta } split /%s/, $ENV{TEMPLATE}, -1 }
+      while (/($re)/g) { print "  line $.: $1\n" if $1 ne $ENV{TEXT} }' "$file")
+  if [ -z "$stale" ] && grep -qF -- "$text" "$file"; then
     echo "ok: $file says \"$text\""
-  elif [ "$mode" = update ] && TEMPLATE="$template" TEXT="$text" perl -i -pe '
+  elif [ "$mode" = update ] && [ "${no_update:-0}" != 1 ] && TEMPLATE="$template" TEXT="$text" perl -i -pe '
       BEGIN { $re = join "[0-9][0-9.]*", map { quotemeta } split /%s/, $ENV{TEMPLATE}, -1 }
       $n += s/$re/$ENV{TEXT}/g; END { $? = $n ? 0 : 1 }' "$file"; then
     echo "updated: $file now says \"$text\""
   else
-    fail "$file should say \"$text\" (the number is measured; fix the text)"
+    fail "$file should say \"$text\" (the number is measured; fix the text)${stale:+; it says:$'\n'$stale}"
   fi
 }
 
@@ -225,7 +235,7 @@ read_rubric() {
   FULL=$(awk -v t="$TOTAL" -v e="$EXTRA" 'BEGIN { print t + e }')
 }
 
-# "N (x)" as the table of weights writes an item's checks: x its points per check, to two
+# "N (x)" as the table of weights writes an item's checks: x its points per check, to three
 # decimals at most; just N for one check.
 share() {
   awk -v p="$1" -v n="$2" 'BEGIN { if (n == 1) { print n; exit }
@@ -239,6 +249,7 @@ check_weights() {
   local name points checks want bad=0
   while IFS=$'\t' read -r name points checks _; do
     [ "$points" = 0 ] && continue
+    [ "$checks" -gt 0 ] || { fail "the rubric's item \"$name\" has points and no check"; bad=1; continue; }
     want="| $name | $points | $(share "$points" "$checks") |"
     grep -qF -- "$want" docs/instructor.md && continue
     if [ "$mode" = update ] && NAME="| $name | " WANT="$want" perl -i -pe '
@@ -275,7 +286,7 @@ check_facts() {
     [ "${stated//_/ }" = "$images + $hidden_images images" ] || restate README.md "${stated//_/ }" \
       "$images + $hidden_images images" "there are $images public and $hidden_images hidden images"
   done
-  fact README.md "apt-get: the %s packages it names" \
+  no_update=1 fact README.md "apt-get: the %s packages it names" \
     "$(bash scripts/install-deps.sh | sed -n 's/.*all \([0-9]*\) packages.*/\1/p')"
   local release
   release=$(sed -n 's|.*export-student.sh out/\([a-z-]*\) --zip.*|\1|p' scripts/main.sh)
@@ -353,6 +364,6 @@ check_words() {
 check_examples
 check_words
 check_facts
-[ "$mode" = update ] || check_handout_images
+check_handout_images
 [ "$failures" -eq 0 ] || { echo "docs-examples: $failures problems" >&2; exit 1; }
 echo "docs-examples: all true"

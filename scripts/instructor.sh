@@ -116,17 +116,24 @@ grade_both() {
   done
 }
 
-# Every file that differs from the last commit (tracked and changed, or new), with a hash of its
-# content: what a job changed is what differs between two of these.
+# Every file that differs from the last commit (tracked and changed or deleted, or new), one
+# "PATH<TAB>HASH" line each ("gone" for a deleted one): what a job changed is what differs
+# between two of these.
 worktree_state() {
+  local file
   git ls-files -m -o --exclude-standard -z -- . ':!out' ':!build' 2>/dev/null |
-    xargs -0 -r sha1sum 2>/dev/null | sort -k2
+    while IFS= read -r -d '' file; do
+      printf '%s\t%s\n' "$file" "$(git hash-object -- "$file" 2>/dev/null || echo gone)"
+    done
 }
 
-# changed_since STATE: the files a job changed since STATE (worktree_state's), one per line.
+# changed_since STATE: the files a job changed since STATE (worktree_state's), one per line:
+# changed, new, or put back as committed.
 changed_since() {
-  join -1 2 -2 2 -a 2 -o 2.2,1.1,2.1 <(printf '%s\n' "$1" | sed '/^$/d') <(worktree_state) |
-    awk '$2 != $3 { print $1 }'
+  awk -F'\t' 'NR == FNR { if ($0 != "") before[$1] = $2; next }
+    { after[$1] = $2; if (before[$1] != $2) print $1 }
+    END { for (p in before) if (!(p in after)) print p }' <(printf '%s\n' "$1") <(worktree_state) |
+    LC_ALL=C sort
 }
 
 # say_changed STATE: names what the job changed, for the TA to read and commit.
@@ -148,13 +155,14 @@ update_docs() {
   echo "=== the docs' examples and counts ==="
   rebuild a6_grade a6_batch a6_tests_starter a6_graded_wrong_t1_wrong_sign >/dev/null || return 1
   local log="$build/instructor-docs.log"
-  A6_BUILD_DIR="$build" bash scripts/docs-examples.sh --update >"$log" 2>&1
-  grep -E '^updated' "$log" || echo "every example and count was already true"
-  if ! A6_BUILD_DIR="$build" bash scripts/docs-examples.sh >"$log" 2>&1; then
+  # One run: --update rewrites what it can, then fails on what is still untrue.
+  if ! A6_BUILD_DIR="$build" bash scripts/docs-examples.sh --update >"$log" 2>&1; then
+    grep -E '^updated' "$log"
     grep -E '^docs-examples: ' "$log" | head -20
     echo "instructor: some docs are still untrue (above; whole log: $log)"
     return 1
   fi
+  grep -E '^updated' "$log" || echo "every example and count was already true"
   echo "the docs' examples and counts are true"
 }
 
@@ -241,7 +249,7 @@ job_rerender() {
 committed_hidden_checks() {
   git ls-tree -r --name-only HEAD -- tests/hidden 2>/dev/null | grep '_test\.cpp$' |
     while read -r file; do git show "HEAD:$file"; done |
-    sed -n 's/^TEST(\(Task[0-9]Hidden\), *\([A-Za-z0-9_]*\)).*/\1.\2/p' | sort
+    sed -n 's/^TEST(\(Task[0-9]Hidden\), *\([A-Za-z0-9_]*\)).*/\1.\2/p' | LC_ALL=C sort
 }
 
 job_hidden_check() {
@@ -254,10 +262,10 @@ job_hidden_check() {
   # Configured again: the hidden folder's *_test.cpp files are found when configuring.
   configure && cmake "$build" >/dev/null || return 1
   rebuild a6_grade a6_tests || return 1
-  "$build/grader/a6_grade" --list-tests 2>/dev/null | grep -E '^Task[0-9]Hidden\.' | sort >"$after"
+  "$build/grader/a6_grade" --list-tests 2>/dev/null | grep -E '^Task[0-9]Hidden\.' | LC_ALL=C sort >"$after"
   echo "=== 2. the hidden checks and their rubric items ==="
   local added
-  added="$(comm -13 <(cut -f1 "$before") <(cut -f1 "$after"))"
+  added="$(LC_ALL=C comm -13 <(cut -f1 "$before") <(cut -f1 "$after"))"
   echo "$(wc -l <"$after") hidden checks; new since the last commit: ${added:-none}"
   sed 's/\t/  ->  /; s/^/  /' "$after"
   local status=0

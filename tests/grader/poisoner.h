@@ -9,6 +9,7 @@
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/syscall.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cstring>
@@ -41,12 +42,17 @@ inline void killAllBut(pid_t spare) {
 }
 
 inline pid_t startPoisoner(uid_t uid) {
+  const pid_t test = getpid();
   const pid_t pid = fork();
   if (pid == 0) {
     if (syscall(SYS_setgroups, 0, nullptr) != 0 || syscall(SYS_setgid, 65534) != 0 ||
         syscall(SYS_setuid, uid) != 0) {
       _exit(126);
     }
+    // Both die with what started them (after setuid, which would clear it): a test killed
+    // before its end leaves no poisoner of its uid for the next run.
+    prctl(PR_SET_PDEATHSIG, SIGKILL, 0, 0, 0);
+    if (getppid() != test) _exit(0);
     setsid();
     prctl(PR_SET_NAME, "a6\nx", 0, 0, 0);
     const pid_t parent = getpid();
@@ -54,14 +60,14 @@ inline pid_t startPoisoner(uid_t uid) {
     pid_t spare = child;  // each spares the other
     if (child == 0) {
       prctl(PR_SET_NAME, "a6\ny", 0, 0, 0);
-      // It ends with its parent, which the caller ends: never a poisoner left for the next test.
       prctl(PR_SET_PDEATHSIG, SIGKILL, 0, 0, 0);
       if (getppid() != parent) _exit(0);
       spare = parent;
     }
+    const timespec pause{0, 500000};
     for (;;) {
       killAllBut(spare);
-      usleep(500);
+      nanosleep(&pause, nullptr);
     }
   }
   return pid;

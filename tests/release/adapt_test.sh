@@ -49,6 +49,13 @@ job() {
 }
 # says LOG TEXT: the job's log holds TEXT.
 says() { grep -qF -- "$2" "$work/$1.log" || fail "$1: the job did not say \"$2\" (log: $work/$1.log)"; }
+# lists LOG FILE: the job's list of the files it changed names FILE.
+lists() {
+  sed -n '/^files this job changed/,/^[^ ]/p' "$work/$1.log" | grep -qx -- "  $2" ||
+    fail "$1: the job's list of changed files lacks $2 (log: $work/$1.log)"
+}
+# step_passed BEFORE TEXT: "ok" TEXT when no check failed since the failure count BEFORE.
+step_passed() { [ "$failures" -ne "$1" ] || pass "$2"; }
 # One rubric item's line (after its name line) set to a value: set_in_item NAME KEY VALUE; or
 # deleted: set_in_item NAME KEY "".
 set_in_item() {
@@ -73,12 +80,13 @@ for item in "spring Jacobians" "the implicit step"; do
   rename_item "Task 7 extra credit: $item" "Task 7: $item"
 done
 set_total $((total + 8 + 10))
+before=$failures
 if job rubric rubric; then
   says rubric "$((total + 18)).00 / $((total + 18)).00"
   says rubric "the starter scores 0"
   says rubric "the docs' examples and counts are true"
-  says rubric "docs/instructor.md"
-  pass "points: the cloth worth 20, task 7 regular; the rubric job graded and updated the docs"
+  for file in README.md docs/handout.md docs/instructor.md; do lists rubric "$file"; done
+  step_passed "$before" "points: the cloth worth 20, task 7 regular; the rubric job graded, updated and listed the docs"
 else
   fail "the rubric job failed:"$'\n'"$(tail -30 "$work/rubric.log")"
 fi
@@ -116,12 +124,14 @@ NAME="Task 2: hidden checks (random particles and environments)" perl -0pi -e '
 set_total $((total + 20))
 perl -pi -e 'print "| Task 2: hidden drag check | 2 | 1 | drag alone on random velocities |\n"
   if /^\| Task 2: hidden checks \(random particles/' docs/instructor.md
+before=$failures
 if job hidden hidden-check; then
   says hidden "new since the last commit: Task2Hidden.DragOpposesRandomVelocities"
   says hidden "Task2Hidden.DragOpposesRandomVelocities  ->  Task 2: hidden drag check"
   says hidden "the starter fails every one"
   says hidden "the docs' examples and counts are true"
-  pass "a hidden check: named as new, counted by its item, solution passes, starter fails"
+  lists hidden docs/instructor.md  # "all N checks"
+  step_passed "$before" "a hidden check: named as new, counted by its item, solution passes, starter fails"
 else
   fail "the hidden-check job failed:"$'\n'"$(tail -30 "$work/hidden.log")"
 fi
@@ -131,21 +141,25 @@ perl -0pi -e 's{("cloth_shear".*?)clothParams\(true, false\)}
   {$1\[\] { SceneParams p = clothParams(true, false); p.ks *= 2; return p; }()}s or die' \
   framework/scenes/mass_spring_scenes.cpp
 git add -A && git -c user.name=a6-test -c user.email=a6-test@localhost commit -qm "adaptations 1 and 2, the scene's source"
+before=$failures
+scenes=$(find tests/golden/replays -name '*.json' | wc -l)
 if job rerender rerender; then
   says rerender "changed: cloth_shear"
+  says rerender "1 written to tests/golden/replays, $((scenes - 1)) the same run as committed"
   changed=$(git status --porcelain -- tests/golden | awk '{ print $2 }')
   others=$(grep -v 'cloth_shear' <<<"$changed")
   [ -n "$changed" ] || fail "re-rendering changed no file of tests/golden"
   [ -z "$others" ] || fail "re-rendering changed files of untouched scenes:"$'\n'"$others"
   grep -q 'replays/cloth_shear.json' <<<"$changed" || fail "the cloth_shear replay was not written"
-  pass "a scene: re-rendered, only cloth_shear's files changed: $(tr '\n' ' ' <<<"$changed")"
+  for file in $changed; do lists rerender "$file"; done
+  step_passed "$before" "a scene: re-rendered, only cloth_shear's files changed: $(tr '\n' ' ' <<<"$changed")"
 else
   fail "the rerender job failed:"$'\n'"$(tail -30 "$work/rerender.log")"
 fi
 
 # The tests an adaptation touches, unchanged, in the copy.
-if ctest --preset default -L golden >"$work/golden.log" 2>&1 &&
-  ctest --preset default -R '^(grader_rubric|grader_grade_.*|grader_scores_TheS.*|docs_examples)$' \
+if ctest --preset default --no-tests=error -L golden >"$work/golden.log" 2>&1 &&
+  ctest --preset default --no-tests=error -R '^(grader_rubric|grader_grade_.*|grader_scores_TheS.*|docs_examples)$' \
     >"$work/tests.log" 2>&1; then
   pass "the affected tests pass: $(grep -h 'tests passed' "$work/golden.log" "$work/tests.log" | tr '\n' ' ')"
 else
