@@ -228,8 +228,10 @@ restate() {
 # The rubric as a6_grade reads it (a6_grade --list-items): ITEMS, one line per item (name,
 # points, checks, extra or regular, visibility), and its totals.
 read_rubric() {
-  ITEMS=$("$grade" --list-items 2>/dev/null | sed '$d')
-  IFS=$'\t' read -r _ TOTAL CHECKS EXTRA < <("$grade" --list-items 2>/dev/null | tail -1)
+  local listed
+  listed=$("$grade" --list-items 2>/dev/null)
+  ITEMS=$(sed '$d' <<<"$listed")
+  IFS=$'\t' read -r _ TOTAL CHECKS EXTRA < <(tail -1 <<<"$listed")
   "$grade" --public-rubric "$scratch/public.toml"
   IFS=$'\t' read -r _ PUBLIC_TOTAL _ PUBLIC_EXTRA < <("$grade" --list-items --rubric "$scratch/public.toml" 2>/dev/null | tail -1)
   FULL=$(awk -v t="$TOTAL" -v e="$EXTRA" 'BEGIN { print t + e }')
