@@ -26,3 +26,24 @@ run_as_student() {
   setpriv --reuid="$uid" --regid="$uid" --clear-groups \
     env CCACHE_DIR="$cache" HOME="$home" USER=student LOGNAME=student "$@"
 }
+
+# seed_student_cache UID CACHE: when CACHE (the student's compiler cache, owned by UID) is empty,
+# fills it with hard links to the caller's own cached objects, so that the student's first build
+# of the release compiles only what the caller's build did not. The linked files stay the
+# caller's (mode 0644: UID reads them and cannot change them, so nothing UID does reaches the
+# caller's cache); the folders become UID's, so that its ccache adds, replaces and removes
+# entries of its own. The caller's counters, configuration and inode cache are not linked.
+# Does nothing when the caller has no cache or it lies on another file system.
+seed_student_cache() {
+  local uid=$1 cache=$2 from
+  from=$(ccache --get-config=cache_dir 2>/dev/null) || return 0
+  [ -d "$from" ] && [ -d "$cache" ] && [ -z "$(ls -A "$cache")" ] || return 0
+  if cp -al "$from/." "$cache/" 2>/dev/null; then
+    find "$cache" -type f \( -name stats -o -name ccache.conf -o -name 'inode-cache*' \
+      -o -name '*.lock' -o -path '*/tmp/*' \) -delete
+    find "$cache" -type d -exec chown "$uid:$uid" {} +
+  else
+    find "$cache" -mindepth 1 -delete  # half a copy: start empty
+  fi
+  return 0
+}

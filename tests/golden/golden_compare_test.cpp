@@ -15,9 +15,10 @@ namespace fs = std::filesystem;
 
 const Rgba kWhite{255, 255, 255, 255}, kBlack{0, 0, 0, 255};
 
-// A fresh folder under the system's temporary folder.
+// A fresh folder under the current one (ctest runs this test in its build folder): not a fixed
+// name in /tmp, which another user's run (root's, or another student's) would own.
 std::string scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("a6_golden_compare_" + name);
+  const fs::path dir = fs::current_path() / "golden_compare_scratch" / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();

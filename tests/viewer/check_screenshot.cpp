@@ -18,7 +18,8 @@
 // --lossy: the screenshot went through a lossy codec (the browser desktop's VNC sends JPEG), so
 // the exact-colour count of 1 is skipped and 2 is read with the tolerance and fraction given.
 // Prints the measured difference. With --out, writes reference.png and difference.png there.
-// Exit code: 0 pass, 1 fail, 2 bad arguments.
+// Exit code: 0 pass, 1 fail, 2 bad arguments, 3 fail with a blank headless reference (the code
+// under test draws nothing there: no other screenshot can pass, so a caller need not try again).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -251,5 +252,6 @@ int main(int argc, char** argv) {
   }
 
   std::printf("%s\n", ok ? "PASS" : "FAIL");
-  return ok ? 0 : 1;
+  if (ok) return 0;
+  return theirs.blank() ? 3 : 1;
 }
