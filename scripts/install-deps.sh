@@ -47,6 +47,7 @@ packages=(
   fonts-dejavu-core  # the viewer panel's font (Greek letters, ×)
   zip unzip          # the Gradescope autograder zip (scripts/gradescope-package.sh) and its test
   jq                 # JSON on the command line (scripts/instructor.sh reads results.json)
+  similarity-tester  # sim_c++: code similarity between submissions (a6_batch --similarity)
 )
 
 # Per platform: Debian gets Chromium, the headless browser that checks the desktop in the

@@ -38,12 +38,12 @@ seed_student_cache() {
   local uid=$1 cache=$2 from
   from=$(ccache --get-config=cache_dir 2>/dev/null) || return 0
   [ -d "$from" ] && [ -d "$cache" ] && [ -z "$(ls -A "$cache")" ] || return 0
-  if cp -al "$from/." "$cache/" 2>/dev/null; then
-    find "$cache" -type f \( -name stats -o -name ccache.conf -o -name 'inode-cache*' \
-      -o -name '*.lock' -o -path '*/tmp/*' \) -delete
-    find "$cache" -type d -exec chown "$uid:$uid" {} +
-  else
-    find "$cache" -mindepth 1 -delete  # half a copy: start empty
-  fi
+  # Root's own builds may add and remove entries meanwhile, so that some links fail: an entry
+  # missed is compiled again, nothing worse (on another file system every link fails).
+  cp -al "$from/." "$cache/" 2>/dev/null
+  find "$cache" -type f \( -name stats -o -name ccache.conf -o -name 'inode-cache*' \
+    -o -name '*.lock' -o -path "$cache/tmp/*" \) -delete
+  find "$cache" -type d -exec chown "$uid:$uid" {} +
+  chmod 0700 "$cache"
   return 0
 }

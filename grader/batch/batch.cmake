@@ -9,10 +9,12 @@ target_link_libraries(a6_batch_core PRIVATE nlohmann_json::nlohmann_json)
 target_compile_options(a6_batch_core PRIVATE ${A6_WARNINGS})
 
 add_executable(a6_batch ${CMAKE_CURRENT_SOURCE_DIR}/batch/batch_main.cpp)
-target_link_libraries(a6_batch PRIVATE a6_batch_core a6_report a6_process CLI11::CLI11)
+target_link_libraries(a6_batch PRIVATE a6_batch_core a6_insights_core a6_report a6_process
+                                       CLI11::CLI11)
 # The default rubric, as a6_grade reads it: part of every submission's fingerprint, so that a
 # changed rubric regrades.
 a6_configured_path(a6_batch rubric "${A6_DEFAULT_RUBRIC}")
+a6_configured_path(a6_batch starter "${PROJECT_SOURCE_DIR}/starter")
 target_compile_options(a6_batch PRIVATE ${A6_WARNINGS})
 if(TARGET a6_grade)
   add_dependencies(a6_batch a6_grade)  # found beside a6_batch

@@ -2,10 +2,12 @@
 //
 //   a6_batch INPUT --out DIR [-j N] [--timeout S] [--layout plain|gradescope|canvas] [--force]
 //            [--grader PATH] [--rubric FILE] [--kit FILE] [--seed N] [--time-budget S]
-//            [--keep-work]
+//            [--keep-work] [--similarity [--starter DIR]]
 //
 // Writes DIR/<student>/ (results.json, report.html, grade.log: a6_grade's output, batch.json: the
-// marker) and DIR/gradebook.csv, shows a progress bar on stderr and prints a summary on stdout.
+// marker), DIR/gradebook.csv and DIR/insights.html (grader/insights/: the class's picture, with
+// the submissions' code similarity under --similarity), shows a progress bar on stderr and prints a
+// summary on stdout.
 //
 // Exit status: 0 when every submission has a grade (graded, or graded with a failed build); 1
 // when some have none (grader error, timed out, crashed); 2 for a bad command line or an input
@@ -70,11 +72,13 @@
 #include <vector>
 
 #include "batch/batch.h"
+#include "insights/page.h"
 #include "report/report.h"  // writeFileAtomically
 #include "sandbox/process.h"
 
 namespace a6::paths {
-extern const char rubric[];  // the default rubric (cmake/A6FastBuild.cmake, a6_configured_path)
+extern const char rubric[];   // the default rubric (cmake/A6FastBuild.cmake, a6_configured_path)
+extern const char starter[];  // the starter files, which the similarity discounts
 }  // namespace a6::paths
 
 namespace fs = std::filesystem;
@@ -174,6 +178,8 @@ struct Options {
   double timeout = kDefaultTimeout;
   bool force = false;
   bool keepWork = false;
+  bool similarity = false;
+  std::string starter = a6::paths::starter;
 };
 
 // The progress on stderr: a bar redrawn in place on a terminal, one line per finished
@@ -293,6 +299,7 @@ class Batch {
     }
     progress.clear();
     killStrays();
+    writeInsightsPage();
     return summary(secondsSince(start), jobs_);
   }
 
@@ -528,6 +535,31 @@ class Batch {
     ranSeconds_.push_back(o.seconds);
   }
 
+  // OUT/insights.html from every results.json in OUT (this run's and earlier runs'), with the
+  // similarity of the submissions' task files when asked for.
+  void writeInsightsPage() {
+    insights::PageInput input;
+    insights::SimilarityReport report;
+    std::error_code ec;
+    if (o_.similarity) {
+      std::vector<std::pair<std::string, fs::path>> all;
+      for (const Submission& s : inv_.submissions) {
+        if (!s.path.empty()) all.emplace_back(s.key, s.path);
+      }
+      const fs::path work = out_ / ".similarity";
+      std::vector<std::string> notes;
+      const auto staged = insights::stageSubmissions(all, work / "files", notes);
+      report = insights::compareSubmissions(staged, o_.starter, work / "compare");
+      report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
+      if (!o_.keepWork) fs::remove_all(work, ec);
+      input.similarity = &report;
+    }
+    if (const std::string e = insights::writeInsights(out_, out_ / "insights.html", input);
+        !e.empty()) {
+      notes_.push_back("insights.html: " + e);
+    }
+  }
+
   void writeGradebook() {
     std::vector<std::pair<const Submission*, const Outcome*>> rows;
     for (std::size_t i = 0; i < inv_.submissions.size(); ++i) {
@@ -660,6 +692,7 @@ class Batch {
       for (const std::string& n : notes) out << "    " << n << "\n";
     }
     out << "  gradebook: " << (out_ / "gradebook.csv").string() << "\n";
+    out << "  the class's picture: " << (out_ / "insights.html").string() << "\n";
     std::fputs(out.str().c_str(), stdout);
     std::fflush(stdout);
     for (const auto& o : outcomes_) {
@@ -716,6 +749,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, Options& options) {
       ->check(CLI::Range(1.0, 86400.0));
   app.add_flag("--keep-work", options.keepWork,
                "keep each a6_grade's work folder (objects, probe; removed by default)");
+  app.add_flag("--similarity", options.similarity,
+               "compare the submissions' task files with sim_c++ (listed in insights.html)");
+  app.add_option("--starter", options.starter, "the starter files the similarity discounts");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

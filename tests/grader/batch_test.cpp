@@ -612,8 +612,9 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
   // Short time limits for the cases that never return (the correct checks take hundredths of
   // a second): the endless loop costs task 1's checks 2 s each.
   const fs::path rubricFile = staging::withTimeLimit(A6_DEFAULT_RUBRIC, dir, 2);
-  const Ran r = batchRun(in, dir / "out",
-                         "-j 2 --timeout 600 --time-budget 120 --rubric " + quoted(rubricFile));
+  const Ran r =
+      batchRun(in, dir / "out",
+               "-j 2 --timeout 600 --time-budget 120 --similarity --rubric " + quoted(rubricFile));
   std::printf("%s", r.output.substr(r.output.find("a6_batch: ")).c_str());
   EXPECT_EQ(r.status, 0) << "every submission has a grade\n" << r.output;
   EXPECT_NE(r.output.find("README.txt"), std::string::npos) << "the stray file is noted";
@@ -657,6 +658,23 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
   ASSERT_NE(starter, nullptr);
   EXPECT_EQ(starter->at("status"), "graded");
   EXPECT_DOUBLE_EQ(pointsOf(*starter, "total"), 0) << describe(*starter);
+
+  // The class's picture: every submission, every rubric item, the wrong version's mistake, the
+  // similarity compared (the wrong version is the solution with one file changed).
+  const std::string page = readAll(dir / "out" / "insights.html");
+  ASSERT_FALSE(page.empty()) << "no insights.html";
+  for (const std::string& st : students) {
+    EXPECT_NE(page.find("<td>" + st + "</td>"), std::string::npos) << "insights.html lacks " << st;
+  }
+  for (const auto& item : rubric().items) {
+    EXPECT_NE(page.find(item.name), std::string::npos) << "insights.html lacks " << item.name;
+  }
+  for (const std::string& name : wrong) {
+    EXPECT_NE(page.find("<code>" + staging::expectedMistake(name) + "</code>"), std::string::npos);
+  }
+  EXPECT_NE(page.find("files compared task file by task file"), std::string::npos)
+      << "--similarity compared nothing";
+  EXPECT_FALSE(fs::exists(dir / "out" / ".similarity")) << "the comparison's work is left";
 
   // Each wrong version loses points in exactly the tasks its EXPECT names. The extra credit
   // (one column for tasks 4 and 7) belongs to its task: it may be what a wrong version loses

@@ -1,0 +1,397 @@
+// insights.html. See page.h.
+#include "insights/page.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "report/report.h"  // htmlEscape
+
+namespace a6::grader::insights {
+namespace {
+
+const char* const kCss = R"(
+body { font: 14px/1.45 system-ui, sans-serif; margin: 2em auto; max-width: 80em; color: #222; padding: 0 1em; }
+h1 { font-size: 1.6em; margin-bottom: .2em; } h2 { margin-top: 1.8em; border-bottom: 1px solid #ddd; }
+table { border-collapse: collapse; margin: .5em 0; } td, th { padding: .25em .7em; text-align: left;
+  border-bottom: 1px solid #eee; vertical-align: top; }
+th { background: #f5f5f5; white-space: nowrap; } th.sort { cursor: pointer; } th.sort:after { content: " \2195"; color: #999; }
+.num { text-align: right; font-variant-numeric: tabular-nums; }
+.bar { display: inline-block; height: .8em; background: #5b8def; vertical-align: middle; }
+.barbox { display: inline-block; width: 8em; background: #eee; margin-right: .5em; }
+.low { background: #d9534f; } .note { color: #555; font-style: italic; }
+.flag { background: #fff4e5; } .plots { display: flex; gap: 2em; flex-wrap: wrap; }
+figure { margin: 0; } figcaption { font-size: .9em; color: #444; text-align: center; }
+.pair { border: 1px solid #ddd; border-radius: 6px; padding: .5em 1em; margin: .8em 0; }
+.side { display: flex; gap: 1em; } .side pre { flex: 1; background: #f7f7f9; border: 1px solid #e4e4e8;
+  padding: .5em; overflow-x: auto; font-size: .85em; margin: .3em 0; }
+svg text { font: 11px system-ui, sans-serif; fill: #333; }
+)";
+
+// Sorts a table by the column whose header was clicked: by each cell's data-v when it has
+// one (numbers), else by its text; a second click reverses.
+const char* const kScript = R"(
+document.querySelectorAll('table.sortable').forEach(function (table) {
+  table.querySelectorAll('th').forEach(function (th, col) {
+    th.classList.add('sort');
+    th.addEventListener('click', function () {
+      var body = table.tBodies[0], rows = Array.prototype.slice.call(body.rows);
+      var dir = th.dataset.dir === 'asc' ? -1 : 1;
+      th.dataset.dir = dir === 1 ? 'asc' : 'desc';
+      function key(row) {
+        var cell = row.cells[col];
+        var v = cell.dataset.v;
+        return v === undefined ? cell.textContent.trim().toLowerCase() : parseFloat(v);
+      }
+      rows.sort(function (a, b) { var x = key(a), y = key(b); return x < y ? -dir : x > y ? dir : 0; });
+      rows.forEach(function (row) { body.appendChild(row); });
+    });
+  });
+});
+document.body.dataset.sortedReady = '1';
+)";
+
+std::string fmt(double x, int digits = 2) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  std::string s = buf;
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  return s;
+}
+
+std::string percent(double fraction) { return fmt(100 * fraction, 0) + " %"; }
+
+// A cell with a sort value and a bar of `fraction` (0..1) before the text.
+std::string barCell(double fraction, const std::string& text) {
+  const bool low = fraction < 0.5;
+  return "<td data-v=\"" + fmt(fraction, 4) + "\"><span class=\"barbox\"><span class=\"bar" +
+         std::string(low ? " low" : "") + "\" style=\"width:" + fmt(100 * fraction, 1) +
+         "%\"></span></span>" + text + "</td>";
+}
+
+std::string numCell(double x, int digits = 2) {
+  return "<td class=\"num\" data-v=\"" + fmt(x, 4) + "\">" + fmt(x, digits) + "</td>";
+}
+
+// Percent-encodes a relative link (a6_batch's folder names are safe already; this keeps it so).
+std::string hrefOf(const std::string& path) {
+  static const char* const hex = "0123456789ABCDEF";
+  std::string out;
+  for (const unsigned char c : path) {
+    if (std::isalnum(c) || c == '/' || c == '.' || c == '-' || c == '_') {
+      out += static_cast<char>(c);
+    } else {
+      out += '%';
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string histogramSvg(const std::vector<double>& values, double max, int bins) {
+  bins = std::max(bins, 1);
+  std::vector<int> count(static_cast<std::size_t>(bins), 0);
+  for (const double v : values) {
+    const double at = max <= 0 ? 0 : std::clamp(v / max, 0.0, 1.0) * bins;
+    ++count[static_cast<std::size_t>(std::min(static_cast<int>(at), bins - 1))];
+  }
+  const int highest = std::max(1, *std::max_element(count.begin(), count.end()));
+  const int w = 22, h = 120, left = 28, bottom = 30;
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << left + bins * w + 10
+      << "\" height=\"" << h + bottom + 10 << "\" role=\"img\">";
+  svg << "<text x=\"2\" y=\"12\">" << highest << "</text><text x=\"2\" y=\"" << h + 10
+      << "\">0</text>";
+  for (int i = 0; i < bins; ++i) {
+    const int bar = count[static_cast<std::size_t>(i)] * h / highest;
+    const int x = left + i * w;
+    svg << "<rect x=\"" << x + 1 << "\" y=\"" << 10 + h - bar << "\" width=\"" << w - 2
+        << "\" height=\"" << bar << "\" fill=\"#5b8def\"><title>" << fmt(max * i / bins, 1)
+        << " to " << fmt(max * (i + 1) / bins, 1) << ": " << count[static_cast<std::size_t>(i)]
+        << "</title></rect>";
+    if (count[static_cast<std::size_t>(i)] > 0) {
+      svg << "<text x=\"" << x + w / 2 - 3 << "\" y=\"" << 8 + h - bar << "\">"
+          << count[static_cast<std::size_t>(i)] << "</text>";
+    }
+    if (i % 2 == 0) {
+      svg << "<text x=\"" << x << "\" y=\"" << h + 24 << "\">" << fmt(max * i / bins, 0)
+          << "</text>";
+    }
+  }
+  svg << "<line x1=\"" << left << "\" y1=\"" << h + 10 << "\" x2=\"" << left + bins * w
+      << "\" y2=\"" << h + 10 << "\" stroke=\"#888\"/></svg>";
+  return svg.str();
+}
+
+namespace {
+
+// Each graded submission's regular points in task `task`, and what the task is worth.
+std::pair<std::vector<double>, double> taskPoints(const ClassInsights& c, int task) {
+  double worth = 0;
+  for (const ItemStats& item : c.items) {
+    if (item.task == task && !item.extraCredit) worth += item.points;
+  }
+  std::vector<double> points;
+  for (const SubmissionResult& s : c.submissions) {
+    if (!s.total) continue;
+    double sum = 0;
+    for (const ItemResult& item : s.items) {
+      if (item.task == task && !item.extraCredit) sum += item.score;
+    }
+    points.push_back(sum);
+  }
+  return {points, worth};
+}
+
+void distributions(std::ostringstream& out, const ClassInsights& c) {
+  std::vector<double> totals;
+  double max = 0;
+  for (const SubmissionResult& s : c.submissions) {
+    if (!s.total) continue;
+    totals.push_back(*s.total);
+    max = std::max(max, s.max + s.extraCredit);
+    max = std::max(max, *s.total);
+  }
+  out << "<h2 id=\"distribution\">Distribution of totals</h2>\n<div class=\"plots\"><figure>"
+      << histogramSvg(totals, max, 20) << "<figcaption>total (extra credit included), "
+      << totals.size() << " graded</figcaption></figure></div>\n<div class=\"plots\">";
+  std::map<int, bool> tasks;
+  for (const ItemStats& item : c.items) {
+    if (item.task > 0 && !item.extraCredit && item.points > 0) tasks[item.task] = true;
+  }
+  for (const auto& [task, _] : tasks) {
+    const auto [points, worth] = taskPoints(c, task);
+    out << "<figure>" << histogramSvg(points, worth, 10) << "<figcaption>task " << task << " (of "
+        << fmt(worth) << " points)</figcaption></figure>";
+  }
+  out << "</div>\n";
+}
+
+void itemsTable(std::ostringstream& out, const ClassInsights& c) {
+  out << "<h2 id=\"items\">Rubric items</h2>\n<p>Every item of the rubric: how many got all of "
+         "it, its mean, and the points the class lost on it (extra credit: not earned).</p>\n"
+         "<table class=\"sortable\"><thead><tr><th>item</th><th>task</th><th>worth</th>"
+         "<th>all of it</th><th>mean</th><th>points lost</th></tr></thead><tbody>\n";
+  for (const ItemStats& item : c.items) {
+    const double rate = item.graded == 0 ? 0 : double(item.full) / item.graded;
+    out << "<tr><td>" << htmlEscape(item.name) << "</td>" << numCell(item.task, 0)
+        << numCell(item.points)
+        << barCell(rate, std::to_string(item.full) + " of " + std::to_string(item.graded))
+        << numCell(item.mean) << numCell(item.lost) << "</tr>\n";
+  }
+  out << "</tbody></table>\n";
+}
+
+void checksTable(std::ostringstream& out, const ClassInsights& c) {
+  std::map<std::string, bool> flagged;
+  for (const Flag& f : c.flags) flagged[f.check] = f.nearlyAllFail;
+  out << "<h2 id=\"checks\">Checks</h2>\n<p>Each check the gradings ran, with how many passed it."
+         "</p>\n<table class=\"sortable\"><thead><tr><th>check</th><th>task</th><th>passed</th>"
+         "<th>failed</th></tr></thead><tbody>\n";
+  for (const CheckStats& check : c.checks) {
+    const auto f = flagged.find(check.name);
+    const bool look = f != flagged.end() && f->second;
+    out << "<tr" << (look ? " class=\"flag\"" : "") << "><td><code>" << htmlEscape(check.name)
+        << "</code></td>" << numCell(check.task, 0)
+        << barCell(check.passRate(),
+                   std::to_string(check.passed) + " of " + std::to_string(check.ran))
+        << numCell(check.ran - check.passed, 0) << "</tr>\n";
+  }
+  out << "</tbody></table>\n";
+}
+
+void flagsSection(std::ostringstream& out, const ClassInsights& c) {
+  out << "<h2 id=\"look\">Checks to look at</h2>\n";
+  if (c.graded < kFlagMinimum) {
+    out << "<p class=\"note\">Only " << c.graded << " graded submissions: checks are judged in a "
+        << "class of " << kFlagMinimum << " or more.</p>\n";
+    return;
+  }
+  std::vector<std::string> fail, pass;
+  for (const Flag& f : c.flags) (f.nearlyAllFail ? fail : pass).push_back(f.check);
+  out << "<p>Nearly everyone fails (at most " << percent(kNearlyAllFail)
+      << " pass): is the check broken, or was the lesson missed?</p><ul>";
+  for (const std::string& check : fail) out << "<li><code>" << htmlEscape(check) << "</code></li>";
+  if (fail.empty()) out << "<li class=\"note\">none</li>";
+  out << "</ul>\n<details><summary>Everyone passes (" << pass.size()
+      << " checks): do they catch anything?</summary><ul>";
+  for (const std::string& check : pass) out << "<li><code>" << htmlEscape(check) << "</code></li>";
+  out << "</ul></details>\n";
+}
+
+void mistakesSection(std::ostringstream& out, const ClassInsights& c) {
+  out << "<h2 id=\"mistakes\">Named mistakes</h2>\n";
+  if (c.mistakes.empty()) {
+    out << "<p class=\"note\">No known mistake was named for any submission.</p>\n";
+    return;
+  }
+  out << "<p>The known mistakes (grader/mistakes/) the reports named, with what one student was "
+         "told.</p>\n<table class=\"sortable\"><thead><tr><th>mistake</th><th>task</th>"
+         "<th>submissions</th><th>example message</th><th>who</th></tr></thead><tbody>\n";
+  for (const MistakeStats& m : c.mistakes) {
+    std::string who;
+    for (const std::string& k : m.who) who += (who.empty() ? "" : ", ") + htmlEscape(k);
+    out << "<tr><td><code>" << htmlEscape(m.id) << "</code></td>" << numCell(m.task, 0)
+        << numCell(static_cast<double>(m.who.size()), 0) << "<td>" << htmlEscape(m.example)
+        << "</td><td>" << who << "</td></tr>\n";
+  }
+  out << "</tbody></table>\n";
+}
+
+void incidentsSection(std::ostringstream& out, const ClassInsights& c) {
+  out << "<h2 id=\"incidents\">Incidents</h2>\n<table class=\"sortable\"><thead><tr><th>"
+         "submission</th><th>what happened</th></tr></thead><tbody>\n";
+  int rows = 0;
+  for (const SubmissionResult& s : c.submissions) {
+    std::vector<std::string> what;
+    if (!s.problem.empty()) what.push_back(s.problem);
+    if (!s.build.empty()) what.push_back("did not compile: " + s.build + " (the starter's used)");
+    if (s.incidents.crashes > 0) what.push_back(std::to_string(s.incidents.crashes) + " crashes");
+    if (s.incidents.timeouts > 0)
+      what.push_back(std::to_string(s.incidents.timeouts) + " time-outs");
+    if (s.incidents.startFailures > 0)
+      what.push_back(std::to_string(s.incidents.startFailures) + " failed starts of its probe");
+    if (what.empty()) continue;
+    std::string text;
+    for (const std::string& w : what) text += (text.empty() ? "" : "; ") + htmlEscape(w);
+    out << "<tr><td>" << htmlEscape(s.key) << "</td><td>" << text << "</td></tr>\n";
+    ++rows;
+  }
+  if (rows == 0) out << "<tr><td colspan=\"2\" class=\"note\">none</td></tr>\n";
+  out << "</tbody></table>\n";
+}
+
+void submissionsTable(std::ostringstream& out, const ClassInsights& c) {
+  std::map<int, bool> tasks;
+  for (const ItemStats& item : c.items) {
+    if (item.task > 0) tasks[item.task] = true;
+  }
+  out << "<h2 id=\"submissions\">Submissions</h2>\n<table class=\"sortable\"><thead><tr>"
+         "<th>submission</th><th>total</th>";
+  for (const auto& [task, _] : tasks) out << "<th>task " << task << "</th>";
+  out << "<th>mistakes</th><th>report</th></tr></thead><tbody>\n";
+  for (const SubmissionResult& s : c.submissions) {
+    out << "<tr><td>" << htmlEscape(s.key) << "</td>";
+    if (s.total) {
+      out << numCell(*s.total);
+    } else {
+      out << "<td data-v=\"-1\">" << htmlEscape(s.problem) << "</td>";
+    }
+    for (const auto& [task, _] : tasks) {
+      double sum = 0;
+      for (const ItemResult& item : s.items) sum += item.task == task ? item.score : 0;
+      out << numCell(sum);
+    }
+    std::string mistakes;
+    for (const ItemResult& item : s.items) {
+      if (!item.mistake.empty() && mistakes.find(item.mistake) == std::string::npos)
+        mistakes += (mistakes.empty() ? "" : " ") + item.mistake;
+    }
+    out << "<td>" << htmlEscape(mistakes) << "</td><td>";
+    if (!s.report.empty()) out << "<a href=\"" << hrefOf(s.report) << "\">report.html</a>";
+    out << "</td></tr>\n";
+  }
+  out << "</tbody></table>\n";
+}
+
+void passage(std::ostringstream& out, const SimilarPair& p, const SharedPassage& s) {
+  out << "<div class=\"side\"><pre><b>" << htmlEscape(p.a) << "</b>, lines " << s.firstA << "-"
+      << s.lastA << "\n"
+      << htmlEscape(s.textA) << "</pre><pre><b>" << htmlEscape(p.b) << "</b>, lines " << s.firstB
+      << "-" << s.lastB << "\n"
+      << htmlEscape(s.textB) << "</pre></div>\n";
+}
+
+void similaritySection(std::ostringstream& out, const SimilarityReport* r) {
+  out << "<h2 id=\"similarity\">Similarity</h2>\n";
+  if (r == nullptr) {
+    out << "<p class=\"note\">Not compared: run <code>a6_batch --similarity</code> (or "
+           "<code>a6_insights --similarity</code>) to compare the submissions' task files.</p>\n";
+    return;
+  }
+  out << "<p>" << htmlEscape(r->tool.empty() ? "no similarity tool" : r->tool) << ", "
+      << r->compared << " files compared task file by task file on this machine; runs of at least "
+      << r->minimumRun
+      << " tokens, the starter's text and the passages common in the class left out. Pairs whose "
+         "shared rare code covers at least "
+      << r->threshold << " % of the smaller file's own code:</p>\n";
+  for (const std::string& n : r->notes) out << "<p class=\"note\">" << htmlEscape(n) << "</p>\n";
+  if (r->pairs.empty()) out << "<p class=\"note\">No pair above the threshold.</p>\n";
+  for (const SimilarPair& p : r->pairs) {
+    out << "<div class=\"pair\"><p><b>" << htmlEscape(p.a) << "</b> and <b>" << htmlEscape(p.b)
+        << "</b>: <code>" << htmlEscape(p.taskFile) << "</code>, " << p.percent << " %</p>\n";
+    for (const SharedPassage& s : p.passages) passage(out, p, s);
+    out << "</div>\n";
+  }
+}
+
+void header(std::ostringstream& out, const ClassInsights& c, const PageInput& in) {
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>"
+      << htmlEscape(in.title) << ": class insights</title><style>" << kCss
+      << "</style></head><body>\n"
+      << "<h1>" << htmlEscape(in.title) << ": class insights</h1>\n<p>" << c.submissions.size()
+      << " submissions, " << c.graded << " with a grade, read from <code>" << htmlEscape(in.source)
+      << "</code>.";
+  std::vector<double> totals;
+  for (const SubmissionResult& s : c.submissions) {
+    if (s.total) totals.push_back(*s.total);
+  }
+  if (!totals.empty()) {
+    std::sort(totals.begin(), totals.end());
+    double sum = 0;
+    for (const double t : totals) sum += t;
+    out << " Mean " << fmt(sum / totals.size()) << ", median " << fmt(totals[totals.size() / 2])
+        << ".";
+  }
+  out << "</p>\n";
+  for (const std::string& n : in.notes) out << "<p class=\"note\">" << htmlEscape(n) << "</p>\n";
+  out << "<p><a href=\"#distribution\">distribution</a> &middot; <a href=\"#items\">rubric "
+         "items</a> "
+         "&middot; <a href=\"#look\">checks to look at</a> &middot; <a "
+         "href=\"#mistakes\">mistakes</a> "
+         "&middot; <a href=\"#incidents\">incidents</a> &middot; <a "
+         "href=\"#similarity\">similarity</a> "
+         "&middot; <a href=\"#submissions\">submissions</a> &middot; <a "
+         "href=\"#checks\">checks</a></p>\n";
+}
+
+}  // namespace
+
+std::string insightsHtml(const ClassInsights& c, const PageInput& in) {
+  std::ostringstream out;
+  header(out, c, in);
+  distributions(out, c);
+  itemsTable(out, c);
+  flagsSection(out, c);
+  mistakesSection(out, c);
+  incidentsSection(out, c);
+  similaritySection(out, in.similarity);
+  submissionsTable(out, c);
+  checksTable(out, c);
+  out << "<script>" << kScript << "</script>\n</body></html>\n";
+  return out.str();
+}
+
+std::string writeInsights(const std::filesystem::path& folder, const std::filesystem::path& page,
+                          PageInput input) {
+  std::vector<std::string> notes;
+  ClassInsights c = summarize(readFolder(folder, notes));
+  for (const SubmissionResult& s : c.submissions) {
+    if (input.title.empty() && !s.rubric.empty()) input.title = s.rubric;
+  }
+  if (input.title.empty()) input.title = "Assignment 6";
+  if (input.source.empty()) input.source = folder.string();
+  input.notes.insert(input.notes.end(), notes.begin(), notes.end());
+  return writeFileAtomically(page, insightsHtml(c, input));
+}
+
+}  // namespace a6::grader::insights

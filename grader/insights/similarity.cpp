@@ -1,0 +1,293 @@
+// Code similarity with sim_c++. See similarity.h.
+//
+// Steps, for each task file: (1) each submission's copy of it, with the lines the starter file
+// has blanked (line numbers kept), into work/<task file>/<n>.cpp; an untouched starter file is
+// left out; (2) sim_c++ -e -s -n: every run of at least minimumRun tokens that two files share,
+// with its lines in each; (3) per file and line, the other files that share it; a line shared
+// with more than kCommonShare of the others is common; (4) per pair, the lines of each file that
+// the other shares and that are not common, over that file's lines that are not common (its own
+// code); the smaller file's share decides.
+#include "insights/similarity.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <system_error>
+
+#include "harness/task_files.h"
+#include "sandbox/process.h"
+
+namespace a6::grader::insights {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kTool = "sim_c++";
+constexpr double kToolSeconds = 120;              // per task file, for the whole class
+constexpr std::uintmax_t kLargestFile = 1 << 20;  // bytes: a task file is a few kB
+constexpr int kMinimumRareLines = 4;              // fewer shared rare lines: a coincidence
+
+std::string readAll(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string trimmed(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+}
+
+// A line that is code: not blank, not a comment alone.
+bool isCode(const std::string& line) {
+  const std::string t = trimmed(line);
+  return !t.empty() && t.rfind("//", 0) != 0 && t.rfind("/*", 0) != 0 && t.rfind("*", 0) != 0;
+}
+
+// Runs sim_c++ with `args`, what it prints into `out`; true when it ran to the end in time.
+bool runTool(const std::vector<std::string>& args, const fs::path& out) {
+  std::vector<char*> argv;
+  std::vector<std::string> all = {kTool};
+  all.insert(all.end(), args.begin(), args.end());
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int null = open("/dev/null", O_RDWR);
+    const int report = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (null < 0 || report < 0) _exit(126);
+    dup2(null, STDIN_FILENO);
+    dup2(report, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+    // The files are the students': the tool gets bounded time, memory and output.
+    const rlimit cpu{static_cast<rlim_t>(kToolSeconds), static_cast<rlim_t>(kToolSeconds)};
+    const rlimit memory{rlim_t(2) << 30, rlim_t(2) << 30},
+        output{rlim_t(64) << 20, rlim_t(64) << 20};
+    setrlimit(RLIMIT_CPU, &cpu);
+    setrlimit(RLIMIT_AS, &memory);
+    setrlimit(RLIMIT_FSIZE, &output);
+    execvp(kTool, argv.data());
+    _exit(127);
+  }
+  if (pid < 0) return false;
+  std::optional<int> status = process::waitFor(pid, kToolSeconds);
+  if (!status) {
+    kill(pid, SIGKILL);
+    status = process::waitFor(pid, 5);
+  }
+  return status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0;
+}
+
+// sim_c++ -v: "Version 3.0.2 ...": the tool's name and version; "" when it does not run.
+std::string toolVersion(const fs::path& work) {
+  const fs::path out = work / "version.txt";
+  if (!runTool({"-v"}, out)) return "";
+  const std::vector<std::string> lines = linesOf(readAll(out));
+  return std::string(kTool) + " (Debian's similarity-tester" +
+         (lines.empty() ? std::string(")") : ", " + trimmed(lines.front()) + ")");
+}
+
+struct Run {
+  int a = 0, b = 0;  // file indexes
+  int a0 = 0, a1 = 0, b0 = 0, b1 = 0, tokens = 0;
+};
+
+// "work/spring.cpp/3.cpp: line 4-8   |work/spring.cpp/5.cpp: line 4-10  [39]".
+std::vector<Run> parseRuns(const std::string& report) {
+  static const std::regex line(
+      R"(^.*/(\d+)\.cpp: line (\d+)-(\d+)\s*\|.*/(\d+)\.cpp: line (\d+)-(\d+)\s*\[(\d+)\]\s*$)");
+  std::vector<Run> runs;
+  for (const std::string& l : linesOf(report)) {
+    std::smatch m;
+    if (!std::regex_match(l, m, line)) continue;
+    runs.push_back({std::stoi(m[1]), std::stoi(m[4]), std::stoi(m[2]), std::stoi(m[3]),
+                    std::stoi(m[5]), std::stoi(m[6]), std::stoi(m[7])});
+  }
+  return runs;
+}
+
+// One task file of one submission, prepared for the tool.
+struct Prepared {
+  std::size_t submission = 0;
+  std::vector<std::string> lines;    // the submission's own text
+  std::vector<std::string> blanked;  // the starter's lines blanked
+};
+
+// The submissions' copies of `taskFile` that differ from the starter, starter lines blanked.
+std::vector<Prepared> prepare(const std::vector<SubmissionFiles>& subs, const fs::path& starterDir,
+                              const std::string& taskFile, std::vector<std::string>& notes) {
+  const std::string starter = readAll(starterDir / taskFile);
+  std::set<std::string> starterLines;
+  for (const std::string& l : linesOf(starter)) starterLines.insert(trimmed(l));
+  std::vector<Prepared> all;
+  for (std::size_t i = 0; i < subs.size(); ++i) {
+    const fs::path file = subs[i].folder / taskFile;
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) continue;
+    if (fs::file_size(file, ec) > kLargestFile) {
+      notes.push_back(subs[i].key + ": " + taskFile + " is over 1 MB: not compared");
+      continue;
+    }
+    const std::string text = readAll(file);
+    if (text == starter) continue;
+    Prepared p{i, linesOf(text), {}};
+    for (const std::string& l : p.lines)
+      p.blanked.push_back(starterLines.count(trimmed(l)) ? "" : l);
+    all.push_back(std::move(p));
+  }
+  return all;
+}
+
+// For each file and line, the other files sharing it.
+using Cover = std::vector<std::vector<std::set<int>>>;
+
+Cover coverOf(const std::vector<Prepared>& files, const std::vector<Run>& runs) {
+  Cover cover(files.size());
+  for (std::size_t i = 0; i < files.size(); ++i) cover[i].resize(files[i].lines.size() + 1);
+  auto mark = [&](int file, int first, int last, int other) {
+    auto& lines = cover[static_cast<std::size_t>(file)];
+    for (int l = std::max(first, 1); l <= last && l < static_cast<int>(lines.size()); ++l)
+      lines[static_cast<std::size_t>(l)].insert(other);
+  };
+  for (const Run& r : runs) {
+    if (r.a < 0 || r.b < 0 || r.a >= static_cast<int>(files.size()) ||
+        r.b >= static_cast<int>(files.size()))
+      continue;
+    mark(r.a, r.a0, r.a1, r.b);
+    mark(r.b, r.b0, r.b1, r.a);
+  }
+  return cover;
+}
+
+// Of file i's own code (its code lines that are not common), the share file j has too, and
+// how many lines that is.
+std::pair<double, int> rareShare(const std::vector<Prepared>& files, const Cover& cover, int i,
+                                 int j) {
+  const double common = kCommonShare * static_cast<double>(files.size() - 1);
+  int own = 0, shared = 0;
+  const auto& f = files[static_cast<std::size_t>(i)];
+  for (std::size_t l = 1; l <= f.blanked.size(); ++l) {
+    if (!isCode(f.blanked[l - 1])) continue;
+    const auto& who = cover[static_cast<std::size_t>(i)][l];
+    if (static_cast<double>(who.size()) > common && files.size() > 2) continue;
+    ++own;
+    shared += who.count(j) > 0;
+  }
+  return {own == 0 ? 0.0 : double(shared) / own, shared};
+}
+
+std::string linesText(const std::vector<std::string>& lines, int first, int last) {
+  std::string text;
+  for (int l = std::max(first, 1); l <= last && l <= static_cast<int>(lines.size()); ++l)
+    text += lines[static_cast<std::size_t>(l - 1)] + "\n";
+  return text;
+}
+
+SimilarPair pairOf(const std::vector<SubmissionFiles>& subs, const std::vector<Prepared>& files,
+                   const std::vector<Run>& runs, int i, int j, const std::string& taskFile,
+                   int percent) {
+  const Prepared &pa = files[static_cast<std::size_t>(i)], &pb = files[static_cast<std::size_t>(j)];
+  SimilarPair p{subs[pa.submission].key, subs[pb.submission].key, taskFile, percent, {}};
+  for (const Run& r : runs) {
+    if (!((r.a == i && r.b == j) || (r.a == j && r.b == i))) continue;
+    const bool ab = r.a == i;
+    SharedPassage s{
+        ab ? r.a0 : r.b0, ab ? r.a1 : r.b1, ab ? r.b0 : r.a0, ab ? r.b1 : r.a1, r.tokens, "", ""};
+    s.textA = linesText(pa.lines, s.firstA, s.lastA);
+    s.textB = linesText(pb.lines, s.firstB, s.lastB);
+    p.passages.push_back(std::move(s));
+  }
+  std::sort(p.passages.begin(), p.passages.end(),
+            [](const SharedPassage& x, const SharedPassage& y) { return x.firstA < y.firstA; });
+  if (p.a > p.b) {
+    std::swap(p.a, p.b);
+    for (SharedPassage& s : p.passages) {
+      std::swap(s.firstA, s.firstB);
+      std::swap(s.lastA, s.lastB);
+      std::swap(s.textA, s.textB);
+    }
+  }
+  return p;
+}
+
+void compareTaskFile(const std::vector<SubmissionFiles>& subs, const fs::path& starter,
+                     const fs::path& work, const std::string& taskFile, SimilarityReport& report) {
+  std::vector<Prepared> files = prepare(subs, starter, taskFile, report.notes);
+  if (files.size() < 2) return;
+  const fs::path dir = work / taskFile;
+  fs::create_directories(dir);
+  std::vector<std::string> args = {"-r", std::to_string(report.minimumRun), "-e", "-s", "-n"};
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    std::ofstream(dir / (std::to_string(i) + ".cpp")) << linesText(files[i].blanked, 1, 1 << 30);
+    args.push_back((dir / (std::to_string(i) + ".cpp")).string());
+  }
+  report.compared += static_cast<int>(files.size());
+  if (!runTool(args, dir / "report.txt")) {
+    report.notes.push_back(taskFile + ": " + kTool + " failed or ran out of time: not compared");
+    return;
+  }
+  const std::vector<Run> runs = parseRuns(readAll(dir / "report.txt"));
+  const Cover cover = coverOf(files, runs);
+  for (int i = 0; i < static_cast<int>(files.size()); ++i) {
+    for (int j = i + 1; j < static_cast<int>(files.size()); ++j) {
+      const auto [ij, linesIj] = rareShare(files, cover, i, j);
+      const auto [ji, linesJi] = rareShare(files, cover, j, i);
+      const double share = std::max(ij, ji);
+      if (std::min(linesIj, linesJi) < kMinimumRareLines || 100 * share < report.threshold)
+        continue;
+      report.pairs.push_back(
+          pairOf(subs, files, runs, i, j, taskFile, static_cast<int>(100 * share + 0.5)));
+    }
+  }
+}
+
+}  // namespace
+
+SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissions,
+                                    const fs::path& starter, const fs::path& work, int threshold,
+                                    int minimumRun) {
+  SimilarityReport report;
+  report.threshold = threshold;
+  report.minimumRun = minimumRun;
+  std::error_code ec;
+  fs::remove_all(work, ec);
+  fs::create_directories(work, ec);
+  report.tool = toolVersion(work);
+  if (report.tool.empty()) {
+    report.notes.push_back(std::string(kTool) +
+                           " is not installed (Debian's similarity-tester: "
+                           "scripts/install-deps.sh installs it): nothing was compared");
+    return report;
+  }
+  for (const std::string& taskFile : kTaskFiles) {
+    try {
+      compareTaskFile(submissions, starter, work, taskFile, report);
+    } catch (const std::exception& e) {
+      report.notes.push_back(taskFile + ": " + e.what());
+    }
+  }
+  std::stable_sort(
+      report.pairs.begin(), report.pairs.end(),
+      [](const SimilarPair& a, const SimilarPair& b) { return a.percent > b.percent; });
+  return report;
+}
+
+}  // namespace a6::grader::insights

@@ -1,0 +1,72 @@
+// Code similarity between the submissions of a batch, task file by task file, with Debian's
+// similarity-tester (sim_c++: Dick Grune's token-run comparator, packaged on every platform we
+// support, run here on this machine: no code leaves it).
+//
+// Why sim_c++: it compares C++ token by token, blind to layout, comments and identifiers (a
+// renamed-variable copy is the same text to it), and reports the runs two files share with
+// their line numbers, which the page shows side by side. Dolos (npm) does the same with
+// tree-sitter but is no Debian package and needs Node.js.
+//
+// What is discounted: a submission's file is compared only where it differs from the starter
+// (lines of the starter file are blanked first), and a shared run is evidence only if it is
+// rare in the class: a run that more than kCommonShare of the submissions share (the formulas
+// every correct solution writes the same way) is left out. A pair is listed when the runs left
+// cover at least `threshold` percent of the smaller of its two files' own code.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace a6::grader::insights {
+
+/// One run two files share: where it lies in each, and its text in each.
+struct SharedPassage {
+  int firstA = 0, lastA = 0, firstB = 0, lastB = 0;  ///< lines, from 1
+  int tokens = 0;
+  std::string textA, textB;
+};
+
+struct SimilarPair {
+  std::string a, b;      ///< submission keys, a < b
+  std::string taskFile;  ///< "spring.cpp"
+  int percent = 0;       ///< of the smaller file's own code that the rare runs cover
+  std::vector<SharedPassage> passages;
+};
+
+struct SimilarityReport {
+  std::string tool;                ///< the program and its version, or "" when it is missing
+  int threshold = 0;               ///< percent
+  int minimumRun = 0;              ///< tokens
+  int compared = 0;                ///< files compared, over all task files
+  std::vector<SimilarPair> pairs;  ///< highest percent first
+  std::vector<std::string> notes;  ///< what could not be compared, and why
+};
+
+/// A submission's files for the comparison: its key and the folder (or staged copy) holding
+/// its task files.
+struct SubmissionFiles {
+  std::string key;
+  std::filesystem::path folder;
+};
+
+/// The task files of each submission (a folder or an archive, read by the grader's intake with
+/// its limits: nothing is extracted) copied into work/<n>/, ready for compareSubmissions; a
+/// submission that cannot be read is a note.
+std::vector<SubmissionFiles> stageSubmissions(
+    const std::vector<std::pair<std::string, std::filesystem::path>>& keyAndPath,
+    const std::filesystem::path& work, std::vector<std::string>& notes);
+
+/// A share of the class above which a shared run is common, not evidence.
+inline constexpr double kCommonShare = 0.34;
+
+/// Compares every pair of submissions task file by task file. `starter`: the folder of the
+/// starter files; `work`: a scratch folder (emptied). Never throws; a missing tool or an
+/// unreadable file is a note.
+SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissions,
+                                    const std::filesystem::path& starter,
+                                    const std::filesystem::path& work, int threshold = 60,
+                                    int minimumRun = 20);
+
+}  // namespace a6::grader::insights

@@ -1,0 +1,147 @@
+// The class's picture (grader/insights/): results.json read whatever it holds, the class's
+// numbers, the checks flagged, and a page that escapes what submissions wrote. End to end
+// (a Gradescope export, similarity, Chromium): insights_test.sh.
+#include "insights/insights.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "insights/page.h"
+
+namespace a6::grader::insights {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A results.json as a6_grade writes it: two items of task 1 (one failed with a named mistake),
+// extra credit in task 7, checks, incidents.
+std::string results(double springScore, bool springPassed, const std::string& mistake = "",
+                    int crashes = 0) {
+  const std::string status = springPassed ? "passed" : "failed";
+  return R"J({"score": )J" + std::to_string(springScore + 3) + R"J(, "tests": [
+    {"name": "Task 1: spring force (7/8 checks)", "number": "1.2", "score": )J" +
+         std::to_string(springScore) + R"J(, "max_score": 12, "status": ")J" + status +
+         R"J(", "visibility": "visible", "tags": ["task1"], "extra_data": {"mistake": ")J" +
+         mistake +
+         R"J(", "mistake_text": "Your spring <b>pulls</b> the wrong way"}},
+    {"name": "Task 7 extra credit: the implicit step (6/6 checks)", "number": "7.3", "score": 3,
+     "max_score": 0, "status": "passed", "tags": ["task7", "extra_credit"]}],
+  "extra_data": {"rubric": "A6", "max_score": 12, "tests": {"Task1Spring.A": ")J" +
+         status + R"J(", "Task1Spring.B": "passed", "GoldenTask7.x": "passed"},
+    "incidents": {"crashes": )J" +
+         std::to_string(crashes) + R"J(, "timeouts": 0, "start_failures": 0},
+    "build": {"spring.cpp": "compiled", "cloth.cpp": "compile error"}}})J";
+}
+
+TEST(Insights, AResultsJsonGivesItsItemsChecksMistakesAndIncidents) {
+  const SubmissionResult s = readResults("ada", results(10.5, false, "t1_wrong_sign", 2));
+  ASSERT_TRUE(s.total.has_value()) << s.problem;
+  EXPECT_DOUBLE_EQ(*s.total, 13.5);
+  EXPECT_EQ(s.rubric, "A6");
+  ASSERT_EQ(s.items.size(), 2u);
+  EXPECT_EQ(s.items[0].name, "Task 1: spring force") << "the check counts are not the item's name";
+  EXPECT_EQ(s.items[0].task, 1);
+  EXPECT_FALSE(s.items[0].passed);
+  EXPECT_EQ(s.items[0].mistake, "t1_wrong_sign");
+  EXPECT_TRUE(s.items[1].extraCredit);
+  EXPECT_EQ(s.items[1].task, 7);
+  EXPECT_DOUBLE_EQ(s.extraCredit, 3);
+  EXPECT_EQ(s.checks.size(), 3u);
+  EXPECT_FALSE(s.checks.at("Task1Spring.A"));
+  EXPECT_EQ(s.incidents.crashes, 2);
+  EXPECT_EQ(s.build, "cloth.cpp");
+}
+
+TEST(Insights, AnythingElseIsAProblemNotAGrade) {
+  for (const std::string& text :
+       {std::string(), std::string("{"), std::string("[1,2]"), std::string(R"({"tests": 3})"),
+        std::string(R"({"tests": [], "extra_data": {"errors": ["a6_grade did not finish"]}})"),
+        std::string(R"({"tests": [7, "x", {"name": 5, "tags": [1, null]}], "score": "high"})")}) {
+    const SubmissionResult s = readResults("x", text);
+    EXPECT_FALSE(s.total.has_value()) << text;
+    EXPECT_FALSE(s.problem.empty()) << text;
+  }
+}
+
+TEST(Insights, TheClassNumbersCountEachSubmissionOnce) {
+  std::vector<SubmissionResult> all;
+  all.push_back(readResults("a", results(12, true)));
+  all.push_back(readResults("b", results(6, false, "t1_wrong_sign")));
+  all.push_back(readResults("c", results(0, false, "t1_wrong_sign")));
+  all.push_back(readResults("d", "not json"));
+  const ClassInsights c = summarize(all);
+  EXPECT_EQ(c.graded, 3);
+  ASSERT_EQ(c.items.size(), 2u);
+  EXPECT_EQ(c.items[0].name, "Task 1: spring force");
+  EXPECT_EQ(c.items[0].full, 1);
+  EXPECT_DOUBLE_EQ(c.items[0].lost, 36 - 18);
+  EXPECT_DOUBLE_EQ(c.items[0].mean, 6);
+  ASSERT_EQ(c.mistakes.size(), 1u);
+  EXPECT_EQ(c.mistakes[0].who, (std::vector<std::string>{"b", "c"}));
+  EXPECT_EQ(c.mistakes[0].example, "Your spring <b>pulls</b> the wrong way");
+  EXPECT_TRUE(c.flags.empty()) << "3 graded submissions are too few to judge a check";
+}
+
+TEST(Insights, ChecksNearlyEveryoneFailsOrNobodyFailsAreFlagged) {
+  std::vector<SubmissionResult> all;
+  for (int i = 0; i < 10; ++i) all.push_back(readResults(std::to_string(i), results(6, i == 0)));
+  const ClassInsights c = summarize(all);
+  std::vector<std::string> fail, pass;
+  for (const Flag& f : c.flags) (f.nearlyAllFail ? fail : pass).push_back(f.check);
+  EXPECT_EQ(fail, (std::vector<std::string>{"Task1Spring.A"})) << "1 of 10 pass it";
+  EXPECT_EQ(pass, (std::vector<std::string>{"GoldenTask7.x", "Task1Spring.B"}));
+}
+
+TEST(Insights, TheTaskOfACheckIsInItsName) {
+  EXPECT_EQ(taskOfCheck("Task4Cloth.X"), 4);
+  EXPECT_EQ(taskOfCheck("GoldenTask6.car_f90"), 6);
+  EXPECT_EQ(taskOfCheck("Task2Hidden.Y"), 2);
+  EXPECT_EQ(taskOfCheck("Sanity.Z"), 0);
+  EXPECT_EQ(taskOfCheck("Task"), 0);
+}
+
+TEST(Insights, ThePageNamesEveryItemAndEscapesWhatSubmissionsWrote) {
+  std::vector<SubmissionResult> all;
+  all.push_back(readResults("<script>alert(1)</script>", results(6, false, "t1_wrong_sign")));
+  all.push_back(readResults("bob", results(12, true)));
+  all.back().report = "bob & co/report.html";
+  const std::string page = insightsHtml(summarize(all), PageInput{"A6", "out", {}, nullptr});
+  EXPECT_NE(page.find("Task 1: spring force"), std::string::npos);
+  EXPECT_NE(page.find("Task 7 extra credit: the implicit step"), std::string::npos);
+  EXPECT_EQ(page.find("<script>alert"), std::string::npos);
+  EXPECT_NE(page.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+  EXPECT_EQ(page.find("<b>pulls</b>"), std::string::npos) << "a message is text, not markup";
+  EXPECT_NE(page.find("href=\"bob%20%26%20co/report.html\""), std::string::npos);
+  EXPECT_EQ(page.find("http://"), page.find("http://www.w3.org/2000/svg"))
+      << "nothing but the SVG namespace names a web address: the page needs no network";
+}
+
+TEST(Insights, AGradescopeExportIsReadWithItsStudentsNames) {
+  const fs::path dir = fs::current_path() / "insights_export";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "export" / "submission_11");
+  fs::create_directories(dir / "export" / "submission_12" / "deep");
+  fs::create_directories(dir / "export" / "submission_13");
+  std::ofstream(dir / "export" / "submission_metadata.yml")
+      << "submission_11:\n  :submitters:\n  - :name: Ada Lovelace\n    :sid: '1'\n"
+      << "submission_12:\n  :submitters:\n  - :name: Ben Ng\n";
+  std::ofstream(dir / "export" / "submission_11" / "results.json") << results(12, true);
+  std::ofstream(dir / "export" / "submission_12" / "deep" / "results.json") << results(0, false);
+  std::vector<std::string> notes;
+  const std::vector<SubmissionResult> all = readFolder(dir, notes);
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_EQ(all[0].key, "Ada Lovelace");
+  EXPECT_EQ(all[1].key, "Ben Ng");
+  EXPECT_TRUE(all[1].total.has_value()) << "results.json below the submission's folder";
+  EXPECT_EQ(all[2].key, "submission_13");
+  EXPECT_FALSE(all[2].total.has_value());
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("1 of 3"), std::string::npos) << notes[0];
+  EXPECT_EQ(exportedSubmissions(dir).size(), 3u);
+}
+
+}  // namespace
+}  // namespace a6::grader::insights
