@@ -707,7 +707,9 @@ std::pair<int, bool> taskOfTags(const Json& tags) {
     if (!tag.is_string()) continue;
     const std::string s = tag.get<std::string>();
     if (s == "extra_credit") extraCredit = true;
-    if (s.size() == 5 && s.rfind("task", 0) == 0 && s[4] >= '1' && s[4] <= '6') task = s[4] - '0';
+    if (s.size() == 5 && s.rfind("task", 0) == 0 && s[4] >= '1' &&
+        s[4] <= '0' + static_cast<int>(kTasks))
+      task = s[4] - '0';
   }
   return {task, extraCredit};
 }
@@ -716,7 +718,7 @@ std::pair<int, bool> taskOfTags(const Json& tags) {
 // (extra_data's own maximum and extra credit win when given).
 void pointsOfTests(const Json& tests, const Json& extra, Outcome& o) {
   double max = 0, extraCredit = 0;
-  std::array<double, 6> tasks{};
+  std::array<double, kTasks> tasks{};
   for (const Json& t : tests) {
     const double score = t.value("score", 0.0);
     max += t.value("max_score", 0.0);
@@ -858,9 +860,9 @@ std::string csvField(const std::string& text) {
 }
 
 std::string gradebookCsv(const std::vector<std::pair<const Submission*, const Outcome*>>& graded) {
-  std::string csv =
-      "student,email,sid,total,max,task1,task2,task3,task4,task5,task6,extra_credit,"
-      "status,seconds,mistakes\r\n";
+  std::string csv = "student,email,sid,total,max,";
+  for (std::size_t t = 1; t <= kTasks; ++t) csv += "task" + std::to_string(t) + ",";
+  csv += "extra_credit,status,seconds,mistakes\r\n";
   auto num = [](const std::optional<double>& x) { return x ? number(*x) : std::string(); };
   for (const auto& [s, o] : graded) {
     for (const Person& p : s->people) {

@@ -95,6 +95,9 @@ std::string fingerprint(const Submission& submission, const std::string& options
 
 // ---- outcomes ---------------------------------------------------------------------------------
 
+/// Tasks 1 to 7 (harness/task_files.h): a column each in the gradebook.
+inline constexpr std::size_t kTasks = 7;
+
 /// Statuses in the gradebook.
 inline constexpr const char* kGraded = "graded";
 inline constexpr const char* kBuildFailed = "build failed";  ///< a task file missing or broken
@@ -110,7 +113,7 @@ struct Outcome {
   /// Points, present when graded (or graded with a failed build): the total (extra credit
   /// included), the rubric's maximum, each task's regular points, the extra credit.
   std::optional<double> total, max;
-  std::array<std::optional<double>, 6> tasks{};
+  std::array<std::optional<double>, kTasks> tasks{};
   std::optional<double> extraCredit;
   double seconds = 0;  ///< a6_grade's wall-clock time
   std::string reason;  ///< why it is not "graded" (for the summary)
@@ -140,7 +143,7 @@ std::optional<Outcome> outcomeOfMarker(const std::string& markerText,
 /// space (quotes doubled).
 std::string csvField(const std::string& text);
 
-/// gradebook.csv: the header `student,email,sid,total,max,task1..task6,extra_credit,status,
+/// gradebook.csv: the header `student,email,sid,total,max,task1..task7,extra_credit,status,
 /// seconds,mistakes`, then one row per person of each submission that has an outcome, in key
 /// order; `mistakes` lists the ids of the known mistakes named, separated by spaces.
 /// Points are blank for a submission without a grade (grader error, timed out, crashed).

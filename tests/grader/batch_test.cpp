@@ -126,8 +126,8 @@ std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
 }
 
 const std::vector<std::string> kHeader = {
-    "student", "email", "sid",   "total",        "max",    "task1",   "task2",   "task3",
-    "task4",   "task5", "task6", "extra_credit", "status", "seconds", "mistakes"};
+    "student", "email", "sid",   "total", "max",          "task1",  "task2",   "task3",
+    "task4",   "task5", "task6", "task7", "extra_credit", "status", "seconds", "mistakes"};
 
 Gradebook readGradebook(const fs::path& file) {
   Gradebook g;
@@ -374,13 +374,19 @@ TEST(BatchParts, TheGradebookIsValidCsv) {
   EXPECT_EQ(records[0], kHeader);
   EXPECT_EQ(records[1][0], "Doe, Jane");
   EXPECT_EQ(records[2][0], "Bob \"B\"");
-  EXPECT_EQ(records[1][3], "88.5");
-  EXPECT_EQ(records[1][8], "3.5");
-  EXPECT_EQ(records[1][12], "build failed");
-  EXPECT_EQ(records[3][3], "") << "no points without a grade";
-  EXPECT_EQ(records[3][12], "timed out");
-  EXPECT_EQ(records[1][14], "t1_wrong_sign t4_duplicate_springs");
-  EXPECT_EQ(records[3][14], "");
+  // The column named `name`.
+  const auto at = [](const std::vector<std::string>& record, const std::string& name) {
+    const auto i = std::find(kHeader.begin(), kHeader.end(), name) - kHeader.begin();
+    return i < static_cast<std::ptrdiff_t>(record.size()) ? record[static_cast<std::size_t>(i)]
+                                                          : "(no " + name + ")";
+  };
+  EXPECT_EQ(at(records[1], "total"), "88.5");
+  EXPECT_EQ(at(records[1], "task4"), "3.5");
+  EXPECT_EQ(at(records[1], "status"), "build failed");
+  EXPECT_EQ(at(records[3], "total"), "") << "no points without a grade";
+  EXPECT_EQ(at(records[3], "status"), "timed out");
+  EXPECT_EQ(at(records[1], "mistakes"), "t1_wrong_sign t4_duplicate_springs");
+  EXPECT_EQ(at(records[3], "mistakes"), "");
   for (const auto& r : records) EXPECT_EQ(r.size(), kHeader.size()) << csv;
 
   // How many submissions made each known mistake, most often first.
@@ -651,8 +657,10 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
     EXPECT_EQ(row->at("mistakes"), id) << describe(*row);
     EXPECT_NE(r.output.find(id), std::string::npos) << "the summary counts " << id;
   }
-  for (int t = 1; t <= 6; ++t) {
-    EXPECT_DOUBLE_EQ(pointsOf(*solution, "task" + std::to_string(t)), regular.at(t)) << t;
+  for (int t = 1; t <= 7; ++t) {
+    EXPECT_DOUBLE_EQ(pointsOf(*solution, "task" + std::to_string(t)),
+                     regular.count(t) ? regular.at(t) : 0)
+        << t;
   }
   const auto* starter = g.row("starter");
   ASSERT_NE(starter, nullptr);
@@ -678,7 +686,8 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
 
   // Each wrong version loses points in exactly the tasks its EXPECT names. The extra credit
   // (one column for tasks 4 and 7) belongs to its task: it may be what a wrong version loses
-  // there. The gradebook has a column for each of tasks 1 to 6 (task 7 is extra credit only).
+  // there. The gradebook has a column for each task's regular points (task 7's are none with
+  // the default rubric: it is extra credit).
   for (const std::string& name : wrong) {
     const auto* row = g.row("wrong_" + name);
     ASSERT_NE(row, nullptr) << name;
@@ -687,14 +696,14 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
     const bool extraShort = pointsOf(*row, "extra_credit") < fullExtra;
     bool extraLost = false;
     for (int t = 1; t <= 7; ++t) {
-      const double got = t <= 6 ? pointsOf(*row, "task" + std::to_string(t)) : 0;
+      const double got = pointsOf(*row, "task" + std::to_string(t));
       const double taskRegular = regular.count(t) ? regular.at(t) : 0;
       const double taskExtra = extra.count(t) ? extra.at(t) : 0;
       if (failing.count(t)) {
         EXPECT_TRUE(got < taskRegular || (taskExtra > 0 && extraShort))
             << name << " must lose points in task " << t << ": " << describe(*row);
         extraLost = extraLost || taskExtra > 0;
-      } else if (t <= 6) {
+      } else {
         EXPECT_DOUBLE_EQ(got, taskRegular)
             << name << " must keep every point of task " << t << ": " << describe(*row);
       }
@@ -860,10 +869,11 @@ TEST(Batch, HangingCrashingAndFailingGradingsAreRecordedAndTheBatchGoesOn) {
        {"fine", "hangs", "hangs_too", "crashes", "fails", "garbage", "refused"}) {
     writeAll(in / name / "spring.cpp", "// " + std::string(name));
   }
-  writeAll(dir / "results.json", R"({"score": 45, "tests": [
+  writeAll(dir / "results.json", R"({"score": 49, "tests": [
     {"name": "Task 1", "score": 12, "max_score": 15, "tags": ["task1"]},
     {"name": "Task 4 extra", "score": 3, "max_score": 0, "tags": ["task4", "extra_credit"]},
-    {"name": "Task 6", "score": 30, "max_score": 85, "tags": ["task6"]}],
+    {"name": "Task 6", "score": 30, "max_score": 75, "tags": ["task6"]},
+    {"name": "Task 7 counted as regular points", "score": 4, "max_score": 10, "tags": ["task7"]}],
     "extra_data": {"max_score": 100, "extra_credit": 3, "errors": [],
                    "build": {"spring.cpp": "compiled"}}})");
   // The grader's arguments: SUBMISSION --out DIR --jobs 1 ... (the rest is not read).
@@ -902,10 +912,11 @@ esac
     }
   }
   const auto* fine = g.row("fine");
-  EXPECT_DOUBLE_EQ(pointsOf(*fine, "total"), 45);
+  EXPECT_DOUBLE_EQ(pointsOf(*fine, "total"), 49);
   EXPECT_DOUBLE_EQ(pointsOf(*fine, "task1"), 12);
   EXPECT_DOUBLE_EQ(pointsOf(*fine, "task4"), 0);
   EXPECT_DOUBLE_EQ(pointsOf(*fine, "task6"), 30);
+  EXPECT_DOUBLE_EQ(pointsOf(*fine, "task7"), 4) << "an instructor's rubric may count task 7";
   EXPECT_DOUBLE_EQ(pointsOf(*fine, "extra_credit"), 3);
   const double hung = pointsOf(*g.row("hangs"), "seconds");
   EXPECT_GE(hung, 2.9);
