@@ -3,8 +3,9 @@
 # (docs/instructor.md says when to use which):
 #
 #   scripts/instructor.sh rerender [--into DIR]
-#       after changing a scene, its constants, the renderer or the palette: rebuilds everything
-#       that depends on them (the renderer, the golden tests, a6_grade, the viewer), re-renders
+#       after changing a scene, its constants, the renderer or the palette: rebuilds the
+#       renderer and the golden tests (a6_golden_programs; a6_grade with the docs' examples at the
+#       end; scripts/test.sh rebuilds the rest before the suite runs), re-renders
 #       every reference image from the solution into tests/golden/ and tests/golden/hidden/ (or
 #       into DIR, leaving the committed ones alone), writes the reference replays the grader's
 #       report plays (tests/golden/replays/, or DIR/replays), says which images changed and which
@@ -204,8 +205,8 @@ job_rerender() {
   command -v jq >/dev/null || { echo "instructor: jq is missing (scripts/install-deps.sh)"; return 1; }
   local state
   state="$(worktree_state)"
-  echo "=== 1. rebuild what depends on the scenes (everything that changed) ==="
-  rebuild || return 1
+  echo "=== 1. rebuild the renderer and the golden tests ==="
+  rebuild a6_golden_programs || return 1
   [ -x "$build/framework/render/a6_render_solution" ] ||
     { echo "instructor: no a6_render_solution in $build (no headless GL?)"; return 1; }
   echo "=== 2. re-render the reference images from the solution ==="

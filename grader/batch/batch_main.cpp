@@ -543,11 +543,15 @@ class Batch {
     std::error_code ec;
     if (o_.similarity) {
       std::vector<std::pair<std::string, fs::path>> all;
+      std::vector<std::string> notes;
       for (const Submission& s : inv_.submissions) {
-        if (!s.path.empty()) all.emplace_back(s.key, s.path);
+        if (!s.path.empty()) {
+          all.emplace_back(s.key, s.path);
+        } else {  // a Canvas upload that this run did not stage (graded by an earlier run)
+          notes.push_back(s.key + ": not compared (graded by an earlier run: --force stages it)");
+        }
       }
       const fs::path work = out_ / ".similarity";
-      std::vector<std::string> notes;
       const auto staged = insights::stageSubmissions(all, work / "files", notes);
       report = insights::compareSubmissions(staged, o_.starter, work / "compare");
       report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
