@@ -76,7 +76,7 @@ std::string describeEntry(const fs::file_status& st) {
 
 // Gives every submission a unique key, in order: the first keeps its base, the next get -2, -3.
 void assignKeys(std::vector<Submission>& subs, std::vector<std::string>& notes) {
-  std::set<std::string> taken = {"gradebook.csv"};  // the output folder's own file
+  std::set<std::string> taken = {"gradebook.csv", "insights.html"};  // the output folder's own
   for (Submission& s : subs) {
     const std::string base = s.key;
     std::string key = base;

@@ -299,7 +299,11 @@ class Batch {
     }
     progress.clear();
     killStrays();
-    writeInsightsPage();
+    try {  // the page is the batch's last word, never a reason to lose its summary
+      writeInsightsPage();
+    } catch (const std::exception& e) {
+      notes_.push_back(std::string("insights.html was not written: ") + e.what());
+    }
     return summary(secondsSince(start), jobs_);
   }
 

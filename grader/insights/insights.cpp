@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <system_error>
@@ -18,11 +18,16 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
+// A results.json is a few hundred kB at most: anything larger is not read (and cannot be
+// parsed, so it becomes a problem, not a grade).
+constexpr std::size_t kLargestResults = 16u << 20;
+
 std::string readAll(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  std::string text(kLargestResults + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text.size() > kLargestResults ? std::string() : text;
 }
 
 SubmissionResult ungraded(const std::string& key, const std::string& problem) {
@@ -37,17 +42,40 @@ SubmissionResult ungraded(const std::string& key, const std::string& problem) {
 std::string stringAt(const Json& j, const char* key) {
   return j.is_object() && j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : "";
 }
+// A finite number, else the fallback (1e999 parses to infinity).
 double numberAt(const Json& j, const char* key, double fallback = 0) {
-  return j.is_object() && j.contains(key) && j[key].is_number() ? j[key].get<double>() : fallback;
+  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) return fallback;
+  const double x = j[key].get<double>();
+  return std::isfinite(x) ? x : fallback;
 }
-Json objectAt(const Json& j, const char* key) {
-  return j.is_object() && j.contains(key) && j[key].is_object() ? j[key] : Json::object();
+int countAt(const Json& j, const char* key) {
+  return static_cast<int>(std::clamp(numberAt(j, key), 0.0, 1e9));
+}
+// The object at `key`, by reference (no copy of a deep tree), or an empty one.
+const Json& objectAt(const Json& j, const char* key) {
+  static const Json empty = Json::object();
+  if (!j.is_object()) return empty;
+  const auto it = j.find(key);
+  return it != j.end() && it->is_object() ? *it : empty;
 }
 
-// "Task 4: cloth (12/14 checks)" -> "Task 4: cloth".
+// "Task 4: cloth (12/14 checks)" -> "Task 4: cloth" (by hand: std::regex recurses per
+// character, and a name is whatever the file holds).
 std::string itemName(const std::string& shown) {
-  static const std::regex counts(R"( \(\d+/\d+ checks?\)$)");
-  return std::regex_replace(shown, counts, "");
+  if (shown.size() < 4 || shown.back() != ')') return shown;
+  const std::size_t open = shown.rfind(" (");
+  if (open == std::string::npos) return shown;
+  const std::string inside = shown.substr(open + 2, shown.size() - open - 3);  // "12/14 checks"
+  const std::size_t slash = inside.find('/'), space = inside.find(' ');
+  const auto digits = [&](std::size_t from, std::size_t to) {
+    return to > from && std::all_of(inside.begin() + static_cast<std::ptrdiff_t>(from),
+                                    inside.begin() + static_cast<std::ptrdiff_t>(to),
+                                    [](char c) { return c >= '0' && c <= '9'; });
+  };
+  const bool counts = slash != std::string::npos && space != std::string::npos && slash < space &&
+                      digits(0, slash) && digits(slash + 1, space) &&
+                      (inside.substr(space) == " checks" || inside.substr(space) == " check");
+  return counts ? shown.substr(0, open) : shown;
 }
 
 ItemResult itemOf(const Json& t) {
@@ -67,7 +95,7 @@ ItemResult itemOf(const Json& t) {
         item.task = s[4] - '0';
     }
   }
-  const Json extra = objectAt(t, "extra_data");
+  const Json& extra = objectAt(t, "extra_data");
   item.mistake = stringAt(extra, "mistake");
   item.mistakeText = stringAt(extra, "mistake_text");
   return item;
@@ -84,14 +112,13 @@ std::string brokenFiles(const Json& build) {
 }
 
 void readExtra(const Json& extra, SubmissionResult& s) {
-  const Json checks = objectAt(extra, "tests");  // kept: items() refers into it
-  for (const auto& [check, status] : checks.items()) {
+  for (const auto& [check, status] : objectAt(extra, "tests").items()) {
     s.checks[check] = status.is_string() && status.get<std::string>() == "passed";
   }
-  const Json incidents = objectAt(extra, "incidents");
-  s.incidents.crashes = static_cast<int>(numberAt(incidents, "crashes"));
-  s.incidents.timeouts = static_cast<int>(numberAt(incidents, "timeouts"));
-  s.incidents.startFailures = static_cast<int>(numberAt(incidents, "start_failures"));
+  const Json& incidents = objectAt(extra, "incidents");
+  s.incidents.crashes = countAt(incidents, "crashes");
+  s.incidents.timeouts = countAt(incidents, "timeouts");
+  s.incidents.startFailures = countAt(incidents, "start_failures");
   s.build = brokenFiles(objectAt(extra, "build"));
 }
 
@@ -103,18 +130,12 @@ std::string markerProblem(const fs::path& marker) {
   return reason.empty() ? status : status + ": " + reason;
 }
 
-// The first results.json in `dir` or below it (a Gradescope export's layout depends on its
-// date), in name order; "" when none.
+// The submission folder's results.json: a plain file (not a link), at its top only. Below it
+// lie the student's own files, and a student can submit a file of that name anywhere there.
 fs::path findResults(const fs::path& dir) {
-  std::vector<fs::path> found;
   std::error_code ec;
-  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    if (it.depth() > 3) it.disable_recursion_pending();
-    if (it->path().filename() == "results.json" && it->is_regular_file(ec))
-      found.push_back(it->path());
-  }
-  std::sort(found.begin(), found.end());
-  return found.empty() ? fs::path() : found.front();
+  const fs::path file = dir / "results.json";
+  return fs::is_regular_file(fs::symlink_status(file, ec)) ? file : fs::path();
 }
 
 // The folder holding a Gradescope export's submission_metadata.yml: `folder` or its only
@@ -202,7 +223,7 @@ SubmissionResult readResults(const std::string& key, const std::string& resultsJ
         resultsJson.empty() ? "its results.json is empty" : "its results.json cannot be read";
     return s;
   }
-  const Json extra = objectAt(r, "extra_data");
+  const Json& extra = objectAt(r, "extra_data");
   s.rubric = stringAt(extra, "rubric");
   if (extra.contains("errors") && extra["errors"].is_array() && !extra["errors"].empty()) {
     s.problem =
@@ -211,7 +232,9 @@ SubmissionResult readResults(const std::string& key, const std::string& resultsJ
     return s;
   }
   if (const std::string refused = stringAt(extra, "refused"); !refused.empty()) {
-    s.problem = "not graded: " + refused;
+    s.problem = "not graded: " + refused;  // 0 points, as in the gradebook
+    s.total = numberAt(r, "score");
+    s.max = numberAt(extra, "max_score");
     return s;
   }
   double max = 0;
@@ -222,7 +245,8 @@ SubmissionResult readResults(const std::string& key, const std::string& resultsJ
     if (s.items.back().extraCredit) s.extraCredit += s.items.back().score;
   }
   s.max = numberAt(extra, "max_score", max);
-  if (r.contains("score") && r["score"].is_number()) s.total = r["score"].get<double>();
+  if (r.contains("score") && r["score"].is_number() && std::isfinite(r["score"].get<double>()))
+    s.total = r["score"].get<double>();
   if (!s.total) s.problem = "its results.json has no score";
   readExtra(extra, s);
   return s;

@@ -50,7 +50,13 @@ int main(int argc, char** argv) {
   if (similarity) {
     const fs::path work = fs::path(out).parent_path() / ".a6_insights_similarity";
     std::vector<std::string> notes;
-    const auto staged = stageSubmissions(exportedSubmissions(folder), work / "files", notes);
+    const auto exported = exportedSubmissions(folder);
+    if (exported.empty()) {
+      notes.push_back(folder +
+                      " is no Gradescope export: its submitted files are not in it "
+                      "(a6_batch --similarity compares a batch's submissions)");
+    }
+    const auto staged = stageSubmissions(exported, work / "files", notes);
     report = compareSubmissions(staged, starter, work / "compare", threshold);
     report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
     fs::remove_all(work, ec);

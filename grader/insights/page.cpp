@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "report/report.h"  // htmlEscape
@@ -275,7 +276,8 @@ void submissionsTable(std::ostringstream& out, const ClassInsights& c) {
   for (const ItemStats& item : c.items) {
     if (item.task > 0) tasks[item.task] = true;
   }
-  out << "<h2 id=\"submissions\">Submissions</h2>\n<table class=\"sortable\"><thead><tr>"
+  out << "<h2 id=\"submissions\">Submissions</h2>\n<p>Each task's regular points (its extra "
+         "credit is in the total).</p><table class=\"sortable\"><thead><tr>"
          "<th>submission</th><th>total</th>";
   for (const auto& [task, _] : tasks) out << "<th>task " << task << "</th>";
   out << "<th>mistakes</th><th>report</th></tr></thead><tbody>\n";
@@ -288,12 +290,14 @@ void submissionsTable(std::ostringstream& out, const ClassInsights& c) {
     }
     for (const auto& [task, _] : tasks) {
       double sum = 0;
-      for (const ItemResult& item : s.items) sum += item.task == task ? item.score : 0;
+      for (const ItemResult& item : s.items)
+        sum += item.task == task && !item.extraCredit ? item.score : 0;  // as the gradebook
       out << numCell(sum);
     }
+    std::set<std::string> named;
     std::string mistakes;
     for (const ItemResult& item : s.items) {
-      if (!item.mistake.empty() && mistakes.find(item.mistake) == std::string::npos)
+      if (!item.mistake.empty() && named.insert(item.mistake).second)
         mistakes += (mistakes.empty() ? "" : " ") + item.mistake;
     }
     out << "<td>" << htmlEscape(mistakes) << "</td><td>";
@@ -323,7 +327,7 @@ void similaritySection(std::ostringstream& out, const SimilarityReport* r) {
       << r->minimumRun
       << " tokens, the starter's text and the passages common in the class left out. Pairs whose "
          "shared rare code covers at least "
-      << r->threshold << " % of the smaller file's own code:</p>\n";
+      << r->threshold << " % of one file's own code (at least 4 lines):</p>\n";
   for (const std::string& n : r->notes) out << "<p class=\"note\">" << htmlEscape(n) << "</p>\n";
   if (r->pairs.empty()) out << "<p class=\"note\">No pair above the threshold.</p>\n";
   for (const SimilarPair& p : r->pairs) {
@@ -349,8 +353,8 @@ void header(std::ostringstream& out, const ClassInsights& c, const PageInput& in
     std::sort(totals.begin(), totals.end());
     double sum = 0;
     for (const double t : totals) sum += t;
-    out << " Mean " << fmt(sum / totals.size()) << ", median " << fmt(totals[totals.size() / 2])
-        << ".";
+    out << " Mean " << fmt(sum / totals.size()) << ", median "
+        << fmt((totals[(totals.size() - 1) / 2] + totals[totals.size() / 2]) / 2) << ".";
   }
   out << "</p>\n";
   for (const std::string& n : in.notes) out << "<p class=\"note\">" << htmlEscape(n) << "</p>\n";

@@ -6,7 +6,7 @@
 // with its lines in each; (3) per file and line, the other files that share it; a line shared
 // with more than kCommonShare of the others is common; (4) per pair, the lines of each file that
 // the other shares and that are not common, over that file's lines that are not common (its own
-// code); the smaller file's share decides.
+// code); the larger of the two shares decides (one file may hold all of the other and more).
 #include "insights/similarity.h"
 
 #include <fcntl.h>
@@ -32,9 +32,9 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kTool = "sim_c++";
-constexpr double kToolSeconds = 120;              // per task file, for the whole class
-constexpr std::uintmax_t kLargestFile = 1 << 20;  // bytes: a task file is a few kB
-constexpr int kMinimumRareLines = 4;              // fewer shared rare lines: a coincidence
+constexpr double kToolSeconds = 120;               // per task file, for the whole class
+constexpr std::uintmax_t kLargestFile = 64 << 10;  // bytes: a task file is a few kB
+constexpr int kMinimumRareLines = 4;               // fewer shared rare lines: a coincidence
 
 std::string readAll(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -135,6 +135,9 @@ struct Prepared {
 std::vector<Prepared> prepare(const std::vector<SubmissionFiles>& subs, const fs::path& starterDir,
                               const std::string& taskFile, std::vector<std::string>& notes) {
   const std::string starter = readAll(starterDir / taskFile);
+  if (starter.empty())
+    notes.push_back(taskFile + ": no starter file in " + starterDir.string() +
+                    ": nothing of it discounted");
   std::set<std::string> starterLines;
   for (const std::string& l : linesOf(starter)) starterLines.insert(trimmed(l));
   std::vector<Prepared> all;
@@ -143,7 +146,7 @@ std::vector<Prepared> prepare(const std::vector<SubmissionFiles>& subs, const fs
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) continue;
     if (fs::file_size(file, ec) > kLargestFile) {
-      notes.push_back(subs[i].key + ": " + taskFile + " is over 1 MB: not compared");
+      notes.push_back(subs[i].key + ": " + taskFile + " is over 64 kB: not compared");
       continue;
     }
     const std::string text = readAll(file);
@@ -177,19 +180,22 @@ Cover coverOf(const std::vector<Prepared>& files, const std::vector<Run>& runs) 
   return cover;
 }
 
-// Of file i's own code (its code lines that are not common), the share file j has too, and
-// how many lines that is.
+// Of file i's own code, the share file j has too, and how many lines that is. A line is common,
+// not i's own, when more than kCommonShare of the files other than i and j share it (j is left
+// out: a pair that copied must not hide behind itself).
 std::pair<double, int> rareShare(const std::vector<Prepared>& files, const Cover& cover, int i,
                                  int j) {
-  const double common = kCommonShare * static_cast<double>(files.size() - 1);
+  const double common = kCommonShare * static_cast<double>(files.size() - 2);
   int own = 0, shared = 0;
   const auto& f = files[static_cast<std::size_t>(i)];
   for (std::size_t l = 1; l <= f.blanked.size(); ++l) {
     if (!isCode(f.blanked[l - 1])) continue;
     const auto& who = cover[static_cast<std::size_t>(i)][l];
-    if (static_cast<double>(who.size()) > common && files.size() > 2) continue;
+    const bool withJ = who.count(j) > 0;
+    const double others = static_cast<double>(who.size()) - (withJ ? 1 : 0);
+    if (others > common && files.size() > 2) continue;
     ++own;
-    shared += who.count(j) > 0;
+    shared += withJ;
   }
   return {own == 0 ? 0.0 : double(shared) / own, shared};
 }

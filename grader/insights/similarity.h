@@ -11,7 +11,7 @@
 // (lines of the starter file are blanked first), and a shared run is evidence only if it is
 // rare in the class: a run that more than kCommonShare of the submissions share (the formulas
 // every correct solution writes the same way) is left out. A pair is listed when the runs left
-// cover at least `threshold` percent of the smaller of its two files' own code.
+// cover at least `threshold` percent of either file's own code.
 #pragma once
 
 #include <filesystem>
@@ -31,7 +31,7 @@ struct SharedPassage {
 struct SimilarPair {
   std::string a, b;      ///< submission keys, a < b
   std::string taskFile;  ///< "spring.cpp"
-  int percent = 0;       ///< of the smaller file's own code that the rare runs cover
+  int percent = 0;       ///< of one file's own code that the rare runs cover (the larger)
   std::vector<SharedPassage> passages;
 };
 
@@ -58,7 +58,7 @@ std::vector<SubmissionFiles> stageSubmissions(
     const std::vector<std::pair<std::string, std::filesystem::path>>& keyAndPath,
     const std::filesystem::path& work, std::vector<std::string>& notes);
 
-/// A share of the class above which a shared run is common, not evidence.
+/// A share of the class (the pair left out) above which a shared line is common, not evidence.
 inline constexpr double kCommonShare = 0.34;
 
 /// Compares every pair of submissions task file by task file. `starter`: the folder of the

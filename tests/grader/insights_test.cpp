@@ -115,32 +115,56 @@ TEST(Insights, ThePageNamesEveryItemAndEscapesWhatSubmissionsWrote) {
   EXPECT_NE(page.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
   EXPECT_EQ(page.find("<b>pulls</b>"), std::string::npos) << "a message is text, not markup";
   EXPECT_NE(page.find("href=\"bob%20%26%20co/report.html\""), std::string::npos);
-  EXPECT_EQ(page.find("http://"), page.find("http://www.w3.org/2000/svg"))
-      << "nothing but the SVG namespace names a web address: the page needs no network";
+  for (std::size_t at = page.find("http"); at != std::string::npos;
+       at = page.find("http", at + 1)) {
+    EXPECT_EQ(page.compare(at, 26, "http://www.w3.org/2000/svg"), 0)
+        << "only the SVG namespace names a web address (the page needs no network): "
+        << page.substr(at, 40);
+  }
 }
 
 TEST(Insights, AGradescopeExportIsReadWithItsStudentsNames) {
   const fs::path dir = fs::current_path() / "insights_export";
   fs::remove_all(dir);
   fs::create_directories(dir / "export" / "submission_11");
-  fs::create_directories(dir / "export" / "submission_12" / "deep");
+  fs::create_directories(dir / "export" / "submission_12" / "a");
   fs::create_directories(dir / "export" / "submission_13");
   std::ofstream(dir / "export" / "submission_metadata.yml")
       << "submission_11:\n  :submitters:\n  - :name: Ada Lovelace\n    :sid: '1'\n"
       << "submission_12:\n  :submitters:\n  - :name: Ben Ng\n";
   std::ofstream(dir / "export" / "submission_11" / "results.json") << results(12, true);
-  std::ofstream(dir / "export" / "submission_12" / "deep" / "results.json") << results(0, false);
+  // Ben's own files: a results.json he submitted, and a link to Ada's: neither is his grade.
+  std::ofstream(dir / "export" / "submission_12" / "a" / "results.json") << results(12, true);
+  fs::create_symlink(dir / "export" / "submission_11" / "results.json",
+                     dir / "export" / "submission_13" / "results.json");
   std::vector<std::string> notes;
   const std::vector<SubmissionResult> all = readFolder(dir, notes);
   ASSERT_EQ(all.size(), 3u);
   EXPECT_EQ(all[0].key, "Ada Lovelace");
+  EXPECT_TRUE(all[0].total.has_value());
   EXPECT_EQ(all[1].key, "Ben Ng");
-  EXPECT_TRUE(all[1].total.has_value()) << "results.json below the submission's folder";
+  EXPECT_FALSE(all[1].total.has_value()) << "a results.json among the submitted files";
   EXPECT_EQ(all[2].key, "submission_13");
-  EXPECT_FALSE(all[2].total.has_value());
+  EXPECT_FALSE(all[2].total.has_value()) << "a link is not the export's results.json";
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_NE(notes[0].find("1 of 3"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[0].find("2 of 3"), std::string::npos) << notes[0];
   EXPECT_EQ(exportedSubmissions(dir).size(), 3u);
+}
+
+TEST(Insights, NumbersNoFileShouldHoldAreNoGrade) {
+  const SubmissionResult inf = readResults("x", R"({"score": 1e999, "tests": []})");
+  EXPECT_FALSE(inf.total.has_value()) << "a number out of range: no results at all";
+  const SubmissionResult big = readResults("y", R"J({"score": 3, "tests": [
+      {"name": "Task 1: x (99999999999999999999999/1 checks)", "score": -1e308, "max_score": 1e308,
+       "tags": ["task1"]}],
+      "extra_data": {"incidents": {"crashes": 1e20, "timeouts": -5}}})J");
+  ASSERT_TRUE(big.total.has_value());
+  EXPECT_EQ(big.items.at(0).name, "Task 1: x");
+  EXPECT_EQ(big.items.at(0).max, 1e308);
+  EXPECT_EQ(big.incidents.crashes, 1000000000);
+  EXPECT_EQ(big.incidents.timeouts, 0);
+  const std::string page = insightsHtml(summarize({inf, big}), PageInput{"A6", "out", {}, nullptr});
+  EXPECT_NE(page.find("</html>"), std::string::npos);
 }
 
 }  // namespace
