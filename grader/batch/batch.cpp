@@ -699,7 +699,17 @@ std::vector<std::string> flagsOf(const Json& incidents) {
   return flags;
 }
 
-// The task (1..6) a test's tags name, 0 for none; and whether they say extra credit.
+}  // namespace
+
+int taskOfTag(const std::string& tag) {
+  const bool named = tag.size() == 5 && tag.rfind("task", 0) == 0 && tag[4] >= '1' &&
+                     tag[4] <= '0' + static_cast<int>(kTasks);
+  return named ? tag[4] - '0' : 0;
+}
+
+namespace {
+
+// The task (1..kTasks) a test's tags name, 0 for none; and whether they say extra credit.
 std::pair<int, bool> taskOfTags(const Json& tags) {
   int task = 0;
   bool extraCredit = false;
@@ -707,9 +717,7 @@ std::pair<int, bool> taskOfTags(const Json& tags) {
     if (!tag.is_string()) continue;
     const std::string s = tag.get<std::string>();
     if (s == "extra_credit") extraCredit = true;
-    if (s.size() == 5 && s.rfind("task", 0) == 0 && s[4] >= '1' &&
-        s[4] <= '0' + static_cast<int>(kTasks))
-      task = s[4] - '0';
+    if (const int t = taskOfTag(s); t > 0) task = t;
   }
   return {task, extraCredit};
 }

@@ -98,6 +98,9 @@ std::string fingerprint(const Submission& submission, const std::string& options
 /// Tasks 1 to 7 (harness/task_files.h): a column each in the gradebook.
 inline constexpr std::size_t kTasks = 7;
 
+/// The task a results.json tag names: N for "task<N>" (1 to kTasks), else 0.
+int taskOfTag(const std::string& tag);
+
 /// Statuses in the gradebook.
 inline constexpr const char* kGraded = "graded";
 inline constexpr const char* kBuildFailed = "build failed";  ///< a task file missing or broken

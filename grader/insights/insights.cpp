@@ -10,7 +10,7 @@
 #include <sstream>
 #include <system_error>
 
-#include "batch/batch.h"  // parseGradescopeMetadata
+#include "batch/batch.h"  // parseGradescopeMetadata, taskOfTag
 
 namespace a6::grader::insights {
 namespace {
@@ -90,9 +90,7 @@ ItemResult itemOf(const Json& t) {
     for (const Json& tag : t["tags"]) {
       const std::string s = tag.is_string() ? tag.get<std::string>() : "";
       if (s == "extra_credit") item.extraCredit = true;
-      if (s.size() == 5 && s.rfind("task", 0) == 0 &&
-          std::isdigit(static_cast<unsigned char>(s[4])))
-        item.task = s[4] - '0';
+      if (const int task = batch::taskOfTag(s); task > 0) item.task = task;
     }
   }
   const Json& extra = objectAt(t, "extra_data");

@@ -135,6 +135,14 @@ std::string histogramSvg(const std::vector<double>& values, double max, int bins
 
 namespace {
 
+// A submission's regular points in task `task` (its extra credit apart, as in the gradebook).
+double regularPoints(const SubmissionResult& s, int task) {
+  double sum = 0;
+  for (const ItemResult& item : s.items)
+    sum += item.task == task && !item.extraCredit ? item.score : 0;
+  return sum;
+}
+
 // Each graded submission's regular points in task `task`, and what the task is worth.
 std::pair<std::vector<double>, double> taskPoints(const ClassInsights& c, int task) {
   double worth = 0;
@@ -144,11 +152,7 @@ std::pair<std::vector<double>, double> taskPoints(const ClassInsights& c, int ta
   std::vector<double> points;
   for (const SubmissionResult& s : c.submissions) {
     if (!s.total) continue;
-    double sum = 0;
-    for (const ItemResult& item : s.items) {
-      if (item.task == task && !item.extraCredit) sum += item.score;
-    }
-    points.push_back(sum);
+    points.push_back(regularPoints(s, task));
   }
   return {points, worth};
 }
@@ -289,10 +293,7 @@ void submissionsTable(std::ostringstream& out, const ClassInsights& c) {
       out << "<td data-v=\"-1\">" << htmlEscape(s.problem) << "</td>";
     }
     for (const auto& [task, _] : tasks) {
-      double sum = 0;
-      for (const ItemResult& item : s.items)
-        sum += item.task == task && !item.extraCredit ? item.score : 0;  // as the gradebook
-      out << numCell(sum);
+      out << numCell(regularPoints(s, task));
     }
     std::set<std::string> named;
     std::string mistakes;
