@@ -34,7 +34,7 @@ void MassSpringSystem::stepImplicit(double dt) {
   }
 
   // 2. A = M - dt ∂f/∂v - dt² ∂f/∂x and b = dt (f + dt ∂f/∂x v), particle by particle...
-  ImplicitSystem system(count);
+  ImplicitSystem& system = implicitSystem();
   for (int i = 0; i < count; ++i) {
     const Particle& p = particles[i];
     system.addBlock(i, i, p.m * Mat2::Identity());

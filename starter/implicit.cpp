@@ -20,7 +20,7 @@
 // 2. MassSpringSystem::stepImplicit(dt):
 //    a. the forces, exactly as in step(): p.f = externalForce(p), then every springForce(s)
 //       added to p2 and subtracted from p1;
-//    b. an ImplicitSystem of n particles (a6/implicit.h). For every particle i:
+//    b. the system to solve: implicitSystem() (a6/implicit.h), empty. For every particle i:
 //           addBlock(i, i, m_i I)          addToB(i, dt f_i)
 //       For every spring, with i, j its p1 and p2 (springEnds()[k]) and
 //       K = dt dfdv + dt² dfdx  (f2 depends on x2 - x1, so ∂f2/∂x1 = -dfdx, ∂f1/∂x1 = +dfdx):

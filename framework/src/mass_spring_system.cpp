@@ -89,6 +89,11 @@ std::vector<std::array<int, 2>> MassSpringSystem::springEnds() const {
   return ends;
 }
 
+ImplicitSystem& MassSpringSystem::implicitSystem() {
+  implicit_.reset(static_cast<int>(particles.size()));
+  return implicit_;
+}
+
 void MassSpringSystem::advanceImplicit(double frameDt, int substeps) {
   const int steps = std::max(1, substeps);
   for (int k = 0; k < steps; ++k) stepImplicit(frameDt / steps);

@@ -1,7 +1,8 @@
 // The framework's half of task 7: ImplicitSystem assembles A Δv = b from 2x2 blocks and solves it.
 // Its answers are checked against a dense solve of the same A and b, built here entry by entry,
 // for a positive definite A, an indefinite one (a compressed spring), fixed particles, a
-// non-symmetric A, and a shape kept from one solve to the next or changed between them.
+// non-symmetric A, and a shape kept from one solve to the next or changed between them (each
+// system keeps its own: two systems never share anything).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -29,7 +30,17 @@ struct Both {
     system.addToB(i, value);
     b.segment<2>(2 * i) += value;
   }
+  // The dense system's rows and columns of i replaced by the identity's, b zero there.
+  void fix(int i) {
+    system.fix(i);
+    fixes.push_back(i);
+    a.middleRows<2>(2 * i).setZero();
+    a.middleCols<2>(2 * i).setZero();
+    a.block<2, 2>(2 * i, 2 * i).setIdentity();
+    b.segment<2>(2 * i).setZero();
+  }
   ImplicitSystem system;
+  std::vector<int> fixes;
   Eigen::MatrixXd a;
   Eigen::VectorXd b;
 };
@@ -70,29 +81,22 @@ void expectSolves(const Both& both, const std::vector<Vec2>& dv) {
 }
 
 TEST(ImplicitSystem, SolvesAPositiveDefiniteSystem) {
-  const Both both = chain(12, 0.01, 50, 0.3, 1);
+  Both both = chain(12, 0.01, 50, 0.3, 1);
   expectSolves(both, both.system.solve());
 }
 
 TEST(ImplicitSystem, SolvesAnIndefiniteSystem) {
   // Transverse stiffness -3 (1 - l0/l < 0, compressed, and far stiffer than the masses): A has
   // negative eigenvalues.
-  const Both both = chain(12, 0.01, 50, -3, 2);
+  Both both = chain(12, 0.01, 50, -3, 2);
   ASSERT_LT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(both.a).eigenvalues().minCoeff(), 0);
   expectSolves(both, both.system.solve());
 }
 
 TEST(ImplicitSystem, AFixedParticleKeepsItsVelocityAndIsLeftOutOfTheOthers) {
   Both both = chain(8, 0.01, 50, 0.3, 3);
-  both.system.fix(0);
-  both.system.fix(5);
-  // The dense system with rows and columns 0 and 5 replaced by the identity's, b zero there.
-  for (const int i : {0, 5}) {
-    both.a.middleRows<2>(2 * i).setZero();
-    both.a.middleCols<2>(2 * i).setZero();
-    both.a.block<2, 2>(2 * i, 2 * i).setIdentity();
-    both.b.segment<2>(2 * i).setZero();
-  }
+  both.fix(0);
+  both.fix(5);
   const std::vector<Vec2> dv = both.system.solve();
   EXPECT_EQ(dv[0], Vec2::Zero());
   EXPECT_EQ(dv[5], Vec2::Zero());
@@ -107,38 +111,83 @@ TEST(ImplicitSystem, SolvesANonSymmetricSystem) {
   expectSolves(both, both.system.solve());
 }
 
+// `system` emptied, then given both's A (its nonzero blocks, column by column) and fixes.
+void refill(ImplicitSystem& system, const Both& both) {
+  const int n = static_cast<int>(both.b.size()) / 2;
+  system.reset(n);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const Mat2 block = both.a.block<2, 2>(2 * i, 2 * j);
+      if (!block.isZero()) system.addBlock(i, j, block);
+    }
+  }
+  for (int i = 0; i < n; ++i) system.addToB(i, both.b.segment<2>(2 * i));
+  for (const int i : both.fixes) system.fix(i);
+}
+
+Eigen::VectorXd freshAnswer(const Both& both) {
+  ImplicitSystem fresh;
+  refill(fresh, both);
+  return flat(fresh.solve());
+}
+
 TEST(ImplicitSystem, ShapesKeptOrChangedBetweenSolvesGiveTheSameAnswers) {
-  const Both first = chain(10, 0.01, 50, 0.3, 5);
+  Both first = chain(10, 0.01, 50, 0.3, 5);
   const Eigen::VectorXd cold = flat(first.system.solve());
   expectSolves(first, first.system.solve());
   EXPECT_EQ(flat(first.system.solve()), cold) << "the same system, solved twice";
 
-  const Both sameShape = chain(10, 0.02, 900, -0.01, 6);  // the same blocks, other values
-  const Eigen::VectorXd reused = flat(sameShape.system.solve());
-  expectSolves(sameShape, sameShape.system.solve());
-  const Both longer = chain(11, 0.01, 50, 0.3, 7);
-  expectSolves(longer, longer.system.solve());
+  Both sameShape = chain(10, 0.02, 900, -0.01, 6);  // the same blocks, other values
+  Both longer = chain(11, 0.01, 50, 0.3, 7);
   Both fewer = chain(10, 0.01, 50, 0.3, 5);
-  fewer.system.fix(9);
-  fewer.a.middleRows<2>(18).setZero();
-  fewer.a.middleCols<2>(18).setZero();
-  fewer.a.block<2, 2>(18, 18).setIdentity();
-  fewer.b.segment<2>(18).setZero();
-  expectSolves(fewer, fewer.system.solve());
+  fewer.fix(9);
+  // One system emptied and filled again for each (as implicitSystem() is at every step): the
+  // shape kept, changed, and back again, each answer the same as a fresh system's, bit for bit.
+  ImplicitSystem kept;
+  for (const Both* both : {&first, &sameShape, &longer, &fewer, &sameShape, &first}) {
+    refill(kept, *both);
+    const std::vector<Vec2> dv = kept.solve();
+    expectSolves(*both, dv);
+    EXPECT_EQ(flat(dv), freshAnswer(*both)) << "a kept shape changed the answer";
+  }
+  // A copy has the same content and answers the same; the original is unchanged by it.
+  ImplicitSystem copy = kept;
+  EXPECT_EQ(flat(copy.solve()), flat(kept.solve()));
+  EXPECT_EQ(copy.particles(), 10);
+}
 
-  EXPECT_EQ(flat(sameShape.system.solve()), reused)
-      << "a system solved with the shape of the one before, and again with its shape made anew";
-  EXPECT_EQ(flat(first.system.solve()), cold) << "the first system again, after other shapes";
+TEST(ImplicitSystem, TwoSystemsSolvedInTurnKeepTheirOwnShapes) {
+  Both small = chain(5, 0.01, 50, 0.3, 11);
+  Both large = chain(40, 0.01, 50, 0.3, 12);
+  const Eigen::VectorXd smallAlone = flat(small.system.solve());
+  const Eigen::VectorXd largeAlone = flat(large.system.solve());
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(flat(small.system.solve()), smallAlone);
+    EXPECT_EQ(flat(large.system.solve()), largeAlone);
+  }
+}
+
+TEST(ImplicitSystem, AResetSystemIsEmpty) {
+  Both both = chain(6, 0.01, 50, 0.3, 13);
+  both.system.solve();
+  both.system.reset(3);
+  EXPECT_EQ(both.system.particles(), 3);
+  // No blocks are left: A is singular until new ones come.
+  EXPECT_THROW(both.system.solve(), std::runtime_error);
+  for (int i = 0; i < 3; ++i) both.system.addBlock(i, i, 2 * Mat2::Identity());
+  for (const Vec2& dv : both.system.solve()) EXPECT_EQ(dv, Vec2::Zero()) << "b was emptied";
+  EXPECT_THROW(both.system.addBlock(3, 3, Mat2::Identity()), std::out_of_range);
+  EXPECT_THROW(both.system.reset(-1), std::invalid_argument);
 }
 
 TEST(ImplicitSystem, NoParticlesAndAZeroRightHandSide) {
   EXPECT_TRUE(ImplicitSystem(0).solve().empty());
-  const Both still = chain(7, 0.01, 50, 0.3, 9, /*withB=*/false);
+  Both still = chain(7, 0.01, 50, 0.3, 9, /*withB=*/false);
   for (const Vec2& dv : still.system.solve()) EXPECT_EQ(dv, Vec2::Zero());
 }
 
 TEST(ImplicitSystem, BlocksAddedInAnotherOrderGiveTheSameAnswer) {
-  const Both both = chain(9, 0.01, 50, 0.3, 8);
+  Both both = chain(9, 0.01, 50, 0.3, 8);
   ImplicitSystem reversed(9);
   Both copy = chain(9, 0.01, 50, 0.3, 8);
   // The same A, its blocks added column by column from the last, then b.

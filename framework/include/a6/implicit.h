@@ -9,7 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/SparseCore>
+#include <memory>
 #include <vector>
 
 #include "a6/spring.h"
@@ -36,7 +36,7 @@ SpringJacobians springJacobians(const Spring& s);
 /// The linear system A Δv = b of one implicit step of n particles: A is 2n x 2n, made of 2x2
 /// blocks, particle i owning rows and columns 2i and 2i+1; b and Δv are 2n long.
 ///
-///   ImplicitSystem sys(n);
+///   ImplicitSystem& sys = implicitSystem();   // MassSpringSystem's, empty, n = its particles
 ///   sys.addBlock(i, j, block);   // A's block (i, j) += block
 ///   sys.addToB(i, value);        // b's entries of particle i += value
 ///   sys.fix(i);                  // Δv of particle i is zero (a pinned particle)
@@ -45,18 +45,22 @@ SpringJacobians springJacobians(const Spring& s);
 /// A must be symmetric (add block (i, j) and its transpose at (j, i)); the solve is a sparse
 /// Cholesky factorisation, Eigen's SimplicialLDLT (which also takes the indefinite A that a
 /// compressed spring can make), and a sparse LU where that fails. Blocks and fixes may come in
-/// any order; a system built the same way at every step (the same springs, in the same order)
-/// reuses the last step's matrix shape and ordering, which makes its solve about three times
-/// cheaper and leaves its answer unchanged.
+/// any order. A system keeps, from one solve to the next, what depends on its matrix's shape
+/// only (the pattern and the ordering): built the same way at every step (the same springs, in
+/// the same order), its solve is about three times cheaper, with the same answer. That is why
+/// MassSpringSystem::implicitSystem() hands out the same system at every step, emptied; a system
+/// of your own, ImplicitSystem sys(n), gives the same answers, only slower.
 class ImplicitSystem {
  public:
-  explicit ImplicitSystem(int particles);
+  explicit ImplicitSystem(int particles = 0);
   ~ImplicitSystem();
-  ImplicitSystem(const ImplicitSystem&) = default;
-  ImplicitSystem(ImplicitSystem&&) = default;
-  ImplicitSystem& operator=(const ImplicitSystem&) = default;
-  ImplicitSystem& operator=(ImplicitSystem&&) = default;
-  int particles() const { return n_; }
+  /// A copy has the same blocks, b and fixes; it learns its shape anew.
+  ImplicitSystem(const ImplicitSystem& other);
+  ImplicitSystem& operator=(const ImplicitSystem& other);
+  int particles() const;
+  /// Empties the system (no blocks, b zero, nothing fixed) for `particles` particles; what it
+  /// learnt of the last shape is kept.
+  void reset(int particles);
   /// A(i, j) += block (2x2, kg).
   void addBlock(int i, int j, const Mat2& block);
   /// b(i) += value (kg·m/s).
@@ -65,19 +69,11 @@ class ImplicitSystem {
   void fix(int i);
   /// Solves A Δv = b; one velocity change per particle, m/s. Throws std::runtime_error when A
   /// is singular or the result is not finite.
-  std::vector<Vec2> solve() const;
-
-  /// One addBlock call: A(i, j) += value.
-  struct Block {
-    int i, j;
-    Mat2 value;
-  };
+  std::vector<Vec2> solve();
 
  private:
-  int n_;
-  std::vector<Block> blocks_;
-  Eigen::VectorXd b_;
-  std::vector<bool> fixed_;
+  struct State;  // the blocks, b, the fixes and the solver's kept work (implicit_system.cpp)
+  std::unique_ptr<State> state_;
 };
 
 }  // namespace a6

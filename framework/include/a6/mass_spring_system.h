@@ -7,6 +7,7 @@
 
 #include "a6/force_model.h"
 #include "a6/forces.h"
+#include "a6/implicit.h"
 #include "a6/spring.h"
 
 namespace a6 {
@@ -41,13 +42,17 @@ class MassSpringSystem {
   /// TASK 7 (implicit.cpp, extra credit). One linearised backward Euler step of dt seconds
   /// (a6/implicit.h): the forces as in step(), then A Δv = b with
   ///   A = M - dt ∂f/∂v - dt² ∂f/∂x,   b = dt (f + dt ∂f/∂x v),
-  /// assembled from every spring's springJacobians() and solved with ImplicitSystem; pinned
+  /// assembled from every spring's springJacobians() and solved with implicitSystem(); pinned
   /// particles are fixed (Δv = 0); then, for every particle that is not pinned, v += Δv and
   /// x += v dt (with the new v). External forces stay explicit (their Jacobians are left out).
   void stepImplicit(double dt);
   /// Advances by frameDt seconds in `substeps` calls of stepImplicit(frameDt / substeps) (the
   /// framework's, like advance() for step()). substeps >= 1.
   void advanceImplicit(double frameDt, int substeps);
+  /// This system's ImplicitSystem (a6/implicit.h) for one implicit step, emptied and sized to
+  /// `particles`: the same object at every step, so that the solver keeps the matrix's shape
+  /// and ordering from the step before (the same springs, the same shape).
+  ImplicitSystem& implicitSystem();
 
   /// The external force on p (gravity, buoyancy, drag, collisions): your externalForce(p, env)
   /// unless a test has swapped in a reference model (see force_model.h). N, world frame.
@@ -68,6 +73,7 @@ class MassSpringSystem {
 
  private:
   ForceModel forceModel_;
+  ImplicitSystem implicit_;
 };
 
 }  // namespace a6
