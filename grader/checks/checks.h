@@ -82,7 +82,7 @@ struct ChecksRun {
   std::vector<std::string> errors;  ///< the grader's own failures
   std::vector<std::string> notes;   ///< for instructors (sandbox protections, restarts)
   std::string probeOutput;          ///< what the probes printed, capped
-  GradeReport::Incidents incidents;
+  Incidents incidents;
   Transcript transcript;          ///< what the public checks asked and the student's code answered
   std::vector<SceneRun> replays;  ///< the imaged scenes run again at replay frames, for the report
   std::filesystem::path replayFolder;  ///< the reference replays (render/replay.h) beside them

@@ -27,19 +27,13 @@ constexpr std::size_t kMessageCap = 8u << 10;      // per test message
 constexpr std::size_t kCompilerCap = 8u << 10;     // compiler messages per task
 constexpr std::uintmax_t kImageCap = 16u << 20;    // an image larger than this is not embedded
 
-double round4(double x) { return std::round(x * 1e4) / 1e4; }
-
 std::string cap(const std::string& text, std::size_t limit) {
   if (text.size() <= limit) return text;
   return text.substr(0, limit) + "\n[... " + std::to_string(text.size() - limit) +
          " more bytes cut]";
 }
 
-std::string fmt(double x) {
-  std::ostringstream out;
-  out << round4(x);
-  return out.str();
-}
+std::string fmt(double x) { return formatPoints(x); }
 
 const TaskBuild* buildOf(const GradeReport& report, int task) {
   if (task < 1 || task > static_cast<int>(kTaskFiles.size())) return nullptr;
@@ -246,73 +240,6 @@ std::string mimeOf(const std::filesystem::path& file) {
 
 }  // namespace
 
-// Scoring --------------------------------------------------------------------------------------
-
-VisibleTotals visibleTotals(const GradeReport& report) {
-  VisibleTotals v;
-  for (const ScoredItem& s : report.items) {
-    const bool now = s.item.visibility == Visibility::Visible;
-    if (!now) {
-      (s.item.extraCredit ? v.laterExtraCredit : v.laterPoints) += s.item.points;
-      ++v.laterItems;
-    } else if (s.item.extraCredit) {
-      v.extraCredit += s.score;
-    } else {
-      v.score += s.score;
-      v.max += s.item.points;
-    }
-  }
-  v.score = round4(v.score);
-  v.extraCredit = round4(v.extraCredit);
-  return v;
-}
-
-void score(GradeReport& report, const Rubric& rubric) {
-  report.items.clear();
-  report.score = report.extraCredit = 0;
-  report.maxScore = rubric.totalPoints;
-  report.rubricTitle = rubric.title;
-  report.rubricFile = rubric.file;
-  for (const RubricItem& item : rubric.items)
-    report.items.push_back(ScoredItem{item, 0, 0, 0, {}, {}});
-
-  // Each test counts for the first item that matches it.
-  for (const TestOutcome& t : report.tests) {
-    const int index = rubric.itemFor(t.name);
-    if (index < 0) {
-      report.warnings.push_back("test " + t.name + " matches no rubric item: it scores nothing");
-      continue;
-    }
-    ScoredItem& s = report.items[static_cast<std::size_t>(index)];
-    s.tests.push_back(&t);
-    (t.passed ? s.passed : s.failed)++;
-  }
-
-  std::map<int, int> rank;  // items seen so far per task, for "task.rank" numbers
-  double regular = 0;
-  for (ScoredItem& s : report.items) {
-    s.number = std::to_string(s.item.task) + "." + std::to_string(++rank[s.item.task]);
-    const int n = s.passed + s.failed;
-    if (n == 0) {
-      std::string where = rubric.file.empty() ? ""
-                                              : " (" + rubric.file.filename().string() + ":" +
-                                                    std::to_string(s.item.line) + ")";
-      report.warnings.push_back("rubric item '" + s.item.name + "'" + where +
-                                " matches no test: its " + fmt(s.item.points) +
-                                " points cannot be earned");
-      s.score = 0;
-    } else if (s.item.allOrNothing) {
-      s.score = s.failed == 0 ? s.item.points : 0;
-    } else {
-      // points * passed / n, not a sum of shares: full marks are exactly the points.
-      s.score = round4(s.item.points * s.passed / n);
-    }
-    (s.item.extraCredit ? report.extraCredit : regular) += s.score;
-  }
-  report.extraCredit = round4(report.extraCredit);
-  report.score = round4(regular + report.extraCredit);
-}
-
 // results.json ---------------------------------------------------------------------------------
 
 namespace {
@@ -347,8 +274,8 @@ Json extraData(const GradeReport& report) {
   extra["rubric"] = report.rubricTitle;
   extra["max_score"] = report.maxScore;
   extra["extra_credit"] = report.extraCredit;
-  extra["seconds"] = round4(report.seconds);
-  extra["grader_peak_rss_mib"] = round4(report.peakRssMiB);
+  extra["seconds"] = roundPoints(report.seconds);
+  extra["grader_peak_rss_mib"] = roundPoints(report.peakRssMiB);
   Json outcomes = Json::object();
   for (const TestOutcome& t : report.tests) outcomes[t.name] = t.passed ? "passed" : "failed";
   extra["tests"] = std::move(outcomes);
