@@ -1,6 +1,6 @@
 # The layer under every stage (sandbox/): processes (waiting, ending strays and a sandbox user's
 # processes, claiming a user; process.h) and the sandbox that runs the compiler, the linker and
-# the probe (sandbox.h). Gives a6_process and a6_sandbox.
+# the probe (sandbox.h; its inside by concern in plan.h). Gives a6_process and a6_sandbox.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(SECCOMP REQUIRED IMPORTED_TARGET GLOBAL libseccomp)
 find_package(Threads REQUIRED)
@@ -9,7 +9,10 @@ add_library(a6_process STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/process.cpp)
 target_include_directories(a6_process PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_compile_options(a6_process PRIVATE ${A6_WARNINGS})
 
-add_library(a6_sandbox STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/sandbox.cpp)
+add_library(a6_sandbox STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/sandbox.cpp
+                              ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/plan.cpp
+                              ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/child.cpp
+                              ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/filter.cpp)
 target_include_directories(a6_sandbox PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_sandbox PUBLIC a6_process PkgConfig::SECCOMP Threads::Threads)
 target_compile_options(a6_sandbox PRIVATE ${A6_WARNINGS})

@@ -1,0 +1,404 @@
+// What the sandboxed child will do, prepared in the parent before fork (plan.h): the mounts
+// that hide the machine and reveal what the command may see, the work folder, the limits and the
+// fds; and the sentence for each step the child reports as failed.
+#include "sandbox/plan.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace a6::grader::sandboxing {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* limitName(int resource) {
+  switch (resource) {
+    case RLIMIT_CPU:
+      return "RLIMIT_CPU";
+    case RLIMIT_AS:
+      return "RLIMIT_AS";
+    case RLIMIT_FSIZE:
+      return "RLIMIT_FSIZE";
+    case RLIMIT_NOFILE:
+      return "RLIMIT_NOFILE";
+    case RLIMIT_NPROC:
+      return "RLIMIT_NPROC";
+    case RLIMIT_CORE:
+      return "RLIMIT_CORE";
+    default:
+      return "an rlimit";
+  }
+}
+
+// Tasks (threads) of a user, from /proc: RLIMIT_NPROC counts them all.
+long tasksOf(uid_t uid) {
+  long total = 0;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator("/proc", ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream status(entry.path() / "status");
+    std::string line;
+    bool mine = false;
+    long threads = 1;
+    while (std::getline(status, line)) {
+      if (line.compare(0, 4, "Uid:") == 0) {
+        std::istringstream in(line.substr(4));
+        long real = -1;
+        in >> real;
+        mine = real == static_cast<long>(uid);
+      } else if (line.compare(0, 8, "Threads:") == 0) {
+        threads = std::max(1L, std::atol(line.c_str() + 8));
+      }
+    }
+    if (mine) total += threads;
+  }
+  return total;
+}
+
+std::size_t depthOf(const fs::path& path) {
+  return static_cast<std::size_t>(std::distance(path.begin(), path.end()));
+}
+
+fs::path canonicalish(const fs::path& path) {
+  std::error_code ec;
+  fs::path out = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return ec ? fs::absolute(path).lexically_normal() : out;
+}
+
+// Creates the work dir fresh and empty, writable by the user the child runs as.
+std::string prepareWorkDir(const fs::path& dir, const Plan& plan) {
+  if (dir.empty()) return "no work dir given";
+  const fs::path abs = fs::absolute(dir).lexically_normal();
+  if (abs == abs.root_path() || depthOf(abs) < 3) {
+    return "refusing to use " + abs.string() + " as a work dir (too close to /)";
+  }
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(abs, ec);
+  if (fs::exists(st)) {
+    if (fs::is_directory(st)) {
+      fs::remove_all(abs, ec);
+    } else {
+      fs::remove(abs, ec);
+    }
+    if (ec) return "cannot empty the work dir " + abs.string() + ": " + ec.message();
+  }
+  fs::create_directories(abs, ec);
+  if (ec) return "cannot create the work dir " + abs.string() + ": " + ec.message();
+  ::chmod(abs.c_str(), 0700);
+  if (plan.dropPrivileges && ::chown(abs.c_str(), plan.uid, plan.gid) != 0) {
+    return "cannot hand the work dir " + abs.string() + " to uid " + std::to_string(plan.uid) +
+           ": " + errnoText(errno);
+  }
+  return "";
+}
+
+// Whether `uid`/`gid` (no supplementary groups: the child drops them) may search a folder.
+bool searchableBy(const struct stat& st, uid_t uid, gid_t gid) {
+  if (st.st_uid == uid) return (st.st_mode & S_IXUSR) != 0;
+  if (st.st_gid == gid) return (st.st_mode & S_IXGRP) != 0;
+  return (st.st_mode & S_IXOTH) != 0;
+}
+
+// The paths a child must see whatever is hidden: SandboxSpec::reveal, its work dir, argv[0].
+std::vector<fs::path> revealsOf(const SandboxSpec& spec, const Plan& plan) {
+  std::vector<fs::path> reveals;
+  for (const fs::path& r : spec.reveal) reveals.push_back(canonicalish(r));
+  reveals.push_back(canonicalish(plan.workDir));
+  reveals.push_back(canonicalish(spec.argv[0]));
+  return reveals;
+}
+
+// A folder the child's user cannot search (a checkout in /root, mode 0700) would keep it from
+// what lies inside, even bound back in place: the outermost such folder above a revealed path is
+// covered whole, and the reveal rebuilds the way in with searchable folders (childMain).
+std::vector<fs::path> unsearchableAncestors(const std::vector<fs::path>& reveals,
+                                            const Plan& plan) {
+  std::vector<fs::path> covers;
+  for (const fs::path& path : reveals) {
+    fs::path ancestor;
+    for (auto part = path.begin(); part != path.end(); ++part) {
+      ancestor /= *part;
+      if (ancestor == path || ancestor == ancestor.root_path()) continue;
+      struct stat st;
+      if (stat(ancestor.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) break;
+      if (!searchableBy(st, plan.uid, plan.gid)) {
+        if (std::find(covers.begin(), covers.end(), ancestor) == covers.end()) {
+          covers.push_back(ancestor);
+        }
+        break;
+      }
+    }
+  }
+  return covers;
+}
+
+// The paths to hide: the spec's, and as a dropped user the unsearchable folders above a reveal.
+std::vector<fs::path> hidesOf(const SandboxSpec& spec, const std::vector<fs::path>& reveals,
+                              const Plan& plan) {
+  std::vector<fs::path> hides;
+  for (const fs::path& h : spec.hide) hides.push_back(canonicalish(h));
+  if (plan.dropPrivileges) {
+    for (const fs::path& c : unsearchableAncestors(reveals, plan)) hides.push_back(c);
+  }
+  return hides;
+}
+
+// One hide operation per existing path (as root); returns the paths hidden.
+std::vector<fs::path> planHides(const std::vector<fs::path>& hides, Plan& plan) {
+  std::vector<fs::path> hidden;
+  bool unhidden = false;
+  for (const fs::path& path : hides) {
+    struct stat st;
+    if (lstat(path.c_str(), &st) != 0) continue;  // nothing to hide
+    if (path == path.root_path()) {
+      plan.notes.push_back("refusing to hide / (everything would be hidden)");
+      continue;
+    }
+    if (!plan.root) {
+      unhidden = true;
+      continue;
+    }
+    MountOp op;
+    op.kind = S_ISDIR(st.st_mode) ? MountOp::HideDir : MountOp::HideFile;
+    op.path = path.string();
+    op.depth = depthOf(path);
+    plan.ops.push_back(op);
+    hidden.push_back(path);
+  }
+  if (unhidden) plan.notes.push_back(kNotRootNote);
+  return hidden;
+}
+
+// One reveal operation per revealed path that lies under a hidden one.
+void planReveals(const std::vector<fs::path>& reveals, const std::vector<fs::path>& hidden,
+                 Plan& plan) {
+  for (const fs::path& path : reveals) {
+    if (std::none_of(hidden.begin(), hidden.end(),
+                     [&](const fs::path& h) { return within(path, h); })) {
+      continue;
+    }
+    MountOp op;
+    op.kind = MountOp::Reveal;
+    op.path = path.string();
+    op.depth = depthOf(path);
+    struct stat st;
+    if (stat(path.c_str(), &st) != 0) {
+      plan.notes.push_back("cannot keep " + op.path + " visible: " + errnoText(errno));
+      continue;
+    }
+    op.isDir = S_ISDIR(st.st_mode);
+    for (fs::path a = path.parent_path(); a != a.root_path(); a = a.parent_path()) {
+      op.chain.insert(op.chain.begin(), a.string());
+    }
+    plan.ops.push_back(op);
+  }
+}
+
+// SandboxSpec::hide and reveal as mount operations, outer paths first; as a non-root user, a
+// note naming what stays readable instead.
+void planMounts(const SandboxSpec& spec, Plan& plan) {
+  const std::vector<fs::path> reveals = revealsOf(spec, plan);
+  const std::vector<fs::path> hidden = planHides(hidesOf(spec, reveals, plan), plan);
+  if (plan.ops.empty()) return;
+  planReveals(reveals, hidden, plan);
+  // Outer paths first; at equal depth, hide before revealing.
+  std::stable_sort(plan.ops.begin(), plan.ops.end(), [](const MountOp& a, const MountOp& b) {
+    if (a.depth != b.depth) return a.depth < b.depth;
+    return (a.kind == MountOp::Reveal ? 1 : 0) < (b.kind == MountOp::Reveal ? 1 : 0);
+  });
+}
+
+// Who the child runs as, and its argv and envp arrays (pointing into plan's own strings).
+void planProgram(const SandboxSpec& spec, Plan& plan) {
+  plan.root = geteuid() == 0;
+  plan.dropPrivileges = plan.root && spec.uid != 0;
+  plan.uid = spec.uid;
+  plan.gid = spec.gid;
+  plan.parent = getpid();  // forkChild sets the keeper instead when it makes a pid namespace
+  plan.args = spec.argv;
+  plan.envs = spec.env;
+  for (std::string& a : plan.args) plan.argv.push_back(a.data());
+  plan.argv.push_back(nullptr);
+  for (std::string& e : plan.envs) plan.envp.push_back(e.data());
+  plan.envp.push_back(nullptr);
+}
+
+// The work dir, and as root the options of the tmpfs laid over it.
+std::string planWorkDir(const SandboxSpec& spec, Plan& plan) {
+  if (std::string e = prepareWorkDir(spec.workDir, plan); !e.empty()) return e;
+  plan.workDir = fs::absolute(spec.workDir).lexically_normal().string();
+  if (plan.root && spec.workDirTmpfsBytes > 0) {
+    plan.workTmpfs = "size=" + std::to_string(spec.workDirTmpfsBytes) +
+                     ",mode=0700,uid=" + std::to_string(plan.dropPrivileges ? plan.uid : 0) +
+                     ",gid=" + std::to_string(plan.dropPrivileges ? plan.gid : 0);
+  }
+  return "";
+}
+
+// The rlimits, in the order the child sets them.
+void planLimits(const Limits& l, Plan& plan) {
+  const auto cpu = static_cast<rlim_t>(std::max(1.0, std::ceil(l.cpuSeconds)));
+  plan.limits.push_back({RLIMIT_CPU, cpu, cpu + 1});  // SIGXCPU first, SIGKILL a second later
+  plan.limits.push_back({RLIMIT_AS, l.memoryBytes, l.memoryBytes});
+  plan.limits.push_back({RLIMIT_FSIZE, l.fileSizeBytes, l.fileSizeBytes});
+  const auto files = static_cast<rlim_t>(std::max(8, l.openFiles));
+  plan.limits.push_back({RLIMIT_NOFILE, files, files});
+  plan.limits.push_back({RLIMIT_CORE, 0, 0});
+  const long tasks = tasksOf(plan.dropPrivileges ? plan.uid : getuid());
+  const auto nproc = static_cast<rlim_t>(tasks + 1 + std::max(0, l.processes));
+  plan.limits.push_back({RLIMIT_NPROC, nproc, nproc});
+}
+
+// The descriptors the child keeps or receives, and the free range above them the child uses
+// while moving them into place. Returns an error, or "".
+std::string planFds(const SandboxSpec& spec, Plan& plan) {
+  int highest = 2;
+  for (int fd : spec.keepFds) {
+    plan.fds.push_back({fd, fd});
+    highest = std::max(highest, fd);
+  }
+  for (const auto& [from, to] : spec.mapFds) {
+    if (to < 3) return "mapFds: child fd " + std::to_string(to) + " is one of 0, 1, 2";
+    plan.fds.push_back({from, to});
+    highest = std::max(highest, to);
+  }
+  if (plan.fds.size() > 64) return "too many fds to pass (64 at most)";
+  plan.highBase = highest + 1;
+  rlimit nofile{};
+  getrlimit(RLIMIT_NOFILE, &nofile);
+  plan.maxFd = static_cast<int>(std::min<rlim_t>(nofile.rlim_cur, 65536));
+  if (plan.highBase + 70 > plan.maxFd) return "fd numbers too high to pass";
+  return "";
+}
+
+// The sentence for a failed step that isolates the child (mounts, network, seccomp); "" for
+// the other steps.
+std::string describeIsolationStep(const Record& r, const Plan& plan) {
+  const std::string err = errnoText(r.err);
+  const bool hasOp = r.index >= 0 && static_cast<std::size_t>(r.index) < plan.ops.size();
+  const std::string opPath = hasOp ? plan.ops[r.index].path : std::string();
+  switch (r.stage) {
+    case kUnshareMounts:
+      return "could not hide the grader's files (unshare(CLONE_NEWNS): " + err +
+             "): only file permissions protect them";
+    case kMountPrivate:
+      return "could not hide the grader's files (making / private: " + err +
+             "): only file permissions protect them";
+    case kHide:
+      return "could not hide " + opPath + " (mount: " + err + ")";
+    case kReveal:
+      return "could not keep " + opPath + " visible under a hidden path: " + err;
+    case kUnshareNet:
+      return "no network namespace (unshare(CLONE_NEWNET): " + err +
+             "): sockets are refused by the seccomp filter only";
+    case kWorkTmpfs:
+      return "mounting a tmpfs on the work dir " + plan.workDir + ": " + err;
+    case kProc:
+      return "could not mount the pid namespace's own /proc (" + err +
+             "): the code sees the machine's processes in /proc (it still cannot signal them)";
+    case kSeccomp:
+      return "could not install the seccomp filter (" + err + "): sockets are not refused";
+    default:
+      return "";
+  }
+}
+
+// The sentence for a failed exec, with the likely cause when it runs as another user.
+std::string describeExec(const Record& r, const Plan& plan, const SandboxSpec& spec) {
+  std::string text = "exec " + spec.argv[0] + ": " + errnoText(r.err);
+  if (r.err == EACCES && plan.dropPrivileges) {
+    text += " (it runs as uid " + std::to_string(plan.uid) +
+            ": the program and every folder above it must be readable and searchable by "
+            "other users)";
+  }
+  return text;
+}
+
+// The sentence for a failed step that sets up the process (session, fds, limits, identity).
+std::string describeProcessStep(const Record& r, const Plan& plan, const SandboxSpec& spec) {
+  const std::string err = errnoText(r.err);
+  switch (r.stage) {
+    case kSetsid:
+      return "setsid: " + err;
+    case kDevNull:
+      return "opening /dev/null: " + err;
+    case kFds:
+      return "passing file descriptors: " + err;
+    case kRlimit:
+      return std::string("setting ") +
+             (r.index >= 0 && static_cast<std::size_t>(r.index) < plan.limits.size()
+                  ? limitName(plan.limits[r.index].resource)
+                  : "an rlimit") +
+             ": " + err;
+    case kChdir:
+      return "entering the work dir " + plan.workDir + ": " + err;
+    case kSetgroups:
+      return "dropping supplementary groups: " + err;
+    case kSetgid:
+      return "switching to gid " + std::to_string(plan.gid) + ": " + err;
+    case kSetuid:
+      return "switching to uid " + std::to_string(plan.uid) + ": " + err;
+    case kDeathSignal:
+      return "setting the parent-death signal: " + err;
+    case kNoNewPrivs:
+      return "setting no_new_privs: " + err;
+    case kExec:
+      return describeExec(r, plan, spec);
+    case kFork:
+      return "starting the program in its pid namespace (fork): " + err;
+    default:
+      return "unknown setup stage " + std::to_string(r.stage) + ": " + err;
+  }
+}
+
+}  // namespace
+
+bool within(const fs::path& path, const fs::path& folder) {
+  auto p = path.begin();
+  for (auto f = folder.begin(); f != folder.end(); ++f, ++p) {
+    if (p == path.end() || *p != *f) return false;
+  }
+  return true;
+}
+
+void deleteWorkDir(const std::string& dir) {
+  if (dir.empty()) return;
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+}
+
+// Everything before fork. Returns an error, or "".
+std::string makePlan(const SandboxSpec& spec, Plan& plan) {
+  if (spec.argv.empty() || spec.argv[0].empty() || spec.argv[0][0] != '/') {
+    return "argv[0] must be an absolute path" +
+           (spec.argv.empty() ? std::string() : " (got '" + spec.argv[0] + "')");
+  }
+  planProgram(spec, plan);
+  if (std::string e = planWorkDir(spec, plan); !e.empty()) return e;
+  planMounts(spec, plan);
+  planLimits(spec.limits, plan);
+  if (std::string e = planFds(spec, plan); !e.empty()) return e;
+  std::string filterError;
+  plan.filter = filterFor(spec.limits.processes <= 0, filterError);
+  if (!filterError.empty()) plan.notes.push_back(filterError + "; sockets are not refused");
+  return "";
+}
+
+// A child's setup report as a sentence for the grader's log or the student's report.
+std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec& spec) {
+  if (std::string text = describeIsolationStep(r, plan); !text.empty()) return text;
+  return describeProcessStep(r, plan, spec);
+}
+
+}  // namespace a6::grader::sandboxing
