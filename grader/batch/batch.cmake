@@ -1,9 +1,11 @@
 # Grading a folder of submissions (batch/: a6_batch, batch_main.cpp). It runs
 # a6_grade once per submission as a child process, so it links none of the grading itself: the
-# layouts, the gradebook and the markers (a6_batch_core), and a6_report for its atomic writes.
+# layouts (layouts.cpp), the outcomes, gradebook and markers (batch.cpp): a6_batch_core; and
+# a6_report for its atomic writes.
 find_package(CLI11 REQUIRED)
 
-add_library(a6_batch_core STATIC ${CMAKE_CURRENT_SOURCE_DIR}/batch/batch.cpp)
+add_library(a6_batch_core STATIC ${CMAKE_CURRENT_SOURCE_DIR}/batch/layouts.cpp
+                                 ${CMAKE_CURRENT_SOURCE_DIR}/batch/batch.cpp)
 target_include_directories(a6_batch_core PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_batch_core PRIVATE nlohmann_json::nlohmann_json)
 target_compile_options(a6_batch_core PRIVATE ${A6_WARNINGS})

@@ -1,0 +1,664 @@
+// Grading a folder of submissions, the first half: the layouts (a Gradescope export, a Canvas
+// download, a plain folder), each submission found, named, staged and fingerprinted. See batch.h;
+// outcomes and the gradebook are in batch.cpp.
+//
+// Batch notes
+// -----------
+// The input folder is the TA's, but the files in it are the students': a name becomes a path
+// only through safeName(), and nothing here opens a submission's archives (a6_grade's intake does,
+// with its limits). Canvas files are copied, never moved: the input folder stays as downloaded,
+// so a re-run finds the same submissions.
+//
+// Keys (a submission's folder under the output folder) must come out the same on every run, or
+// a resumed batch would not find its markers: the entries are read in sorted order and a
+// duplicate key gets "-2", "-3", ... in that order.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <system_error>
+
+#include "batch/batch.h"
+#include "common/fnv1a.h"
+
+namespace a6::grader::batch {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+// A file larger than this is fingerprinted by its size and modification time, not its bytes.
+constexpr std::uintmax_t kHashContentLimit = 64u << 20;
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string readAll(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The archive extensions a6_grade's intake reads, longest first.
+const std::vector<std::string> kArchiveExtensions = {".tar.gz", ".tar.bz2", ".tar.xz",
+                                                     ".tgz",    ".zip",     ".tar"};
+
+// The extension of an archive's name (lower case), or "".
+std::string archiveExtension(const std::string& name) {
+  const std::string l = lower(name);
+  for (const std::string& ext : kArchiveExtensions) {
+    if (l.size() > ext.size() && endsWith(l, ext)) return ext;
+  }
+  return "";
+}
+
+std::string describeEntry(const fs::file_status& st) {
+  if (fs::is_symlink(st)) return "a symbolic link";
+  if (fs::is_directory(st)) return "a folder";
+  if (fs::is_regular_file(st)) return "a file";
+  return "not a file or a folder";
+}
+
+// Gives every submission a unique key, in order: the first keeps its base, the next get -2, -3.
+void assignKeys(std::vector<Submission>& subs, std::vector<std::string>& notes) {
+  std::set<std::string> taken = {"gradebook.csv", "insights.html"};  // the output folder's own
+  for (Submission& s : subs) {
+    const std::string base = s.key;
+    std::string key = base;
+    for (int n = 2; taken.count(lower(key)) != 0; ++n) key = base + "-" + std::to_string(n);
+    if (key != base) {
+      notes.push_back("two submissions are named '" + base +
+                      "': the second one's results are in '" + key + "/'");
+    }
+    taken.insert(lower(key));  // case-insensitive file systems hold one of Alice and alice
+    s.key = key;
+  }
+  std::sort(subs.begin(), subs.end(),
+            [](const Submission& a, const Submission& b) { return a.key < b.key; });
+}
+
+// ---- Gradescope -------------------------------------------------------------------------------
+
+int indentOf(const std::string& line) {
+  int n = 0;
+  while (n < static_cast<int>(line.size()) && line[static_cast<std::size_t>(n)] == ' ') ++n;
+  return n;
+}
+
+// A YAML scalar as Gradescope writes them: plain, 'single' ('' for a quote) or "double" (with
+// backslash escapes); a trailing comment after a plain value is dropped.
+std::string yamlScalar(std::string v) {
+  while (!v.empty() && (v.back() == ' ' || v.back() == '\r' || v.back() == '\t')) v.pop_back();
+  std::size_t start = v.find_first_not_of(' ');
+  if (start == std::string::npos) return "";
+  v = v.substr(start);
+  if (v.size() >= 2 && v.front() == '\'' && v.back() == '\'') {
+    std::string out;
+    for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+      out += v[i];
+      if (v[i] == '\'' && v[i + 1] == '\'') ++i;
+    }
+    return out;
+  }
+  if (v.size() >= 2 && v.front() == '"' && v.back() == '"') {
+    std::string out;
+    for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+      if (v[i] == '\\' && i + 2 < v.size()) {
+        const char e = v[++i];
+        out += e == 'n' ? '\n' : e == 't' ? '\t' : e;
+      } else {
+        out += v[i];
+      }
+    }
+    return out;
+  }
+  if (const std::size_t hash = v.find(" #"); hash != std::string::npos) {
+    v.resize(hash);
+    while (!v.empty() && v.back() == ' ') v.pop_back();
+  }
+  if (v == "~" || v == "null") return "";
+  return v;
+}
+
+// "key: value" -> (key, value) for keys such as ":name:" (Ruby symbols) or "name".
+bool keyValue(const std::string& text, std::string& key, std::string& value) {
+  std::size_t from = 0;
+  if (!text.empty() && text[0] == ':') from = 1;
+  const std::size_t colon = text.find(':', from);
+  if (colon == std::string::npos) return false;
+  if (colon + 1 < text.size() && text[colon + 1] != ' ') return false;
+  key = text.substr(from, colon - from);
+  value = colon + 1 < text.size() ? text.substr(colon + 1) : "";
+  return true;
+}
+
+// ---- Canvas -----------------------------------------------------------------------------------
+
+// "spring-1.cpp" -> ("spring.cpp", 1); "sub-2.tar.gz" -> ("sub.tar.gz", 2).
+std::pair<std::string, int> withoutReupload(const std::string& name) {
+  std::string ext;
+  for (const std::string multi : {".tar.gz", ".tar.bz2", ".tar.xz"}) {
+    if (name.size() > multi.size() && endsWith(lower(name), multi)) ext = multi;
+  }
+  if (ext.empty()) {
+    const std::size_t dot = name.rfind('.');
+    if (dot != std::string::npos && dot > 0) ext = name.substr(dot);
+  }
+  const std::string stem = name.substr(0, name.size() - ext.size());
+  static const std::regex suffix("^(.+)-([0-9]{1,4})$");
+  std::smatch m;
+  if (std::regex_match(stem, m, suffix)) {
+    return {m[1].str() + name.substr(stem.size()), std::stoi(m[2].str())};
+  }
+  return {name, 0};
+}
+
+// FNV-1a: enough to notice a changed file (this is not a defence against forgery: the input
+// folder is the TA's).
+struct Hash : Fnv1a {
+  void addFile(const fs::path& file) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(file, ec);
+    if (ec) {
+      add("unreadable");
+      return;
+    }
+    add(std::to_string(size));
+    if (size > kHashContentLimit) {
+      const auto time = fs::last_write_time(file, ec);
+      add(std::to_string(time.time_since_epoch().count()));
+      return;
+    }
+    std::ifstream in(file, std::ios::binary);
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+      addBytes(buffer, static_cast<std::size_t>(in.gcount()));
+    }
+  }
+};
+
+}  // namespace
+
+// ---- names ------------------------------------------------------------------------------------
+
+const char* toString(Layout layout) {
+  switch (layout) {
+    case Layout::Plain:
+      return "plain";
+    case Layout::Gradescope:
+      return "gradescope";
+    case Layout::Canvas:
+      return "canvas";
+  }
+  return "?";
+}
+
+std::optional<Layout> layoutNamed(const std::string& name) {
+  for (const Layout l : {Layout::Plain, Layout::Gradescope, Layout::Canvas}) {
+    if (lower(name) == toString(l)) return l;
+  }
+  return std::nullopt;
+}
+
+std::string safeName(const std::string& text) {
+  std::string out;
+  for (const unsigned char c : text) {
+    const bool keep = std::isalnum(c) || c == '.' || c == '-' || c == '_';
+    if (keep) {
+      out += static_cast<char>(c);
+    } else if (!out.empty() && out.back() != '_') {
+      out += '_';  // spaces, accents (UTF-8 bytes), slashes: one '_' per run
+    }
+  }
+  while (!out.empty() && (out.front() == '.' || out.front() == '_')) out.erase(0, 1);
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  if (out.size() > 80) out.resize(80);
+  return out.empty() ? "student" : out;
+}
+
+// ---- Gradescope -------------------------------------------------------------------------------
+
+namespace {
+
+// Reads a Gradescope submission_metadata.yml one line at a time (the shape: see
+// parseGradescopeMetadata).
+class MetadataReader {
+ public:
+  void read(std::string line) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const int indent = indentOf(line);
+    const std::string body = line.substr(static_cast<std::size_t>(indent));
+    if (body.empty() || body[0] == '#' || body == "---" || body[0] == '\t') return;
+    if (indent == 0) {
+      startSubmission(body);
+      return;
+    }
+    if (people_ == nullptr) return;
+    if (childIndent_ < 0) childIndent_ = indent;
+    if (listIndent_ >= 0 && inSubmitters(indent, body)) return;
+    std::string key, value;
+    if (indent == childIndent_ && keyValue(body, key, value) && key == "submitters" &&
+        yamlScalar(value).empty()) {
+      listIndent_ = indent;  // (":submitters: []" names nobody)
+      itemIndent_ = -1;
+    }
+  }
+
+  std::map<std::string, std::vector<Person>> take() { return std::move(out_); }
+
+ private:
+  // A top-level key starts the next submission (a block scalar's text is always indented).
+  void startSubmission(const std::string& body) {
+    std::string key, value;
+    people_ = nullptr;
+    listIndent_ = -1;
+    if (keyValue(body, key, value) && yamlScalar(value).empty()) {
+      people_ = &out_[key];
+      childIndent_ = -1;
+    }
+  }
+
+  // Inside the :submitters: list: a line of it (true), or the first line after it (false).
+  bool inSubmitters(int indent, const std::string& body) {
+    const bool item = body.rfind("- ", 0) == 0;
+    if (item && indent >= listIndent_ && (itemIndent_ < 0 || indent == itemIndent_)) {
+      itemIndent_ = indent;
+      people_->emplace_back();
+      setField(body.substr(2));
+      return true;
+    }
+    if (itemIndent_ >= 0 && indent == itemIndent_ + 2) {
+      setField(body);
+      return true;
+    }
+    if (indent > listIndent_) return true;  // deeper data of a submitter
+    listIndent_ = -1;                       // the list ended
+    return false;
+  }
+
+  void setField(const std::string& text) {
+    std::string key, value;
+    if (people_->empty() || !keyValue(text, key, value)) return;
+    Person& p = people_->back();
+    if (key == "name") p.name = yamlScalar(value);
+    if (key == "email") p.email = yamlScalar(value);
+    if (key == "sid") p.sid = yamlScalar(value);
+  }
+
+  std::map<std::string, std::vector<Person>> out_;
+  std::vector<Person>* people_ = nullptr;  // the submission being read
+  int childIndent_ = -1;                   // indentation of its keys
+  int listIndent_ = -1;                    // >= 0 inside its :submitters: list: the key's indent
+  int itemIndent_ = -1;                    // indentation of the list's "- "
+};
+
+}  // namespace
+
+std::map<std::string, std::vector<Person>> parseGradescopeMetadata(const std::string& yaml) {
+  // The shape read (Gradescope writes Ruby symbols as keys; other keys and deeper data skipped):
+  //   submission_<id>:
+  //     :submitters:
+  //     - :name: Jane Doe
+  //       :sid: '123'
+  //       :email: jane@example.edu
+  //     :created_at: ...
+  MetadataReader reader;
+  std::istringstream in(yaml);
+  for (std::string line; std::getline(in, line);) reader.read(line);
+  return reader.take();
+}
+
+// ---- Canvas -----------------------------------------------------------------------------------
+
+std::optional<CanvasName> parseCanvasName(const std::string& fileName) {
+  static const std::regex pattern("^([^_]+)_(?:([Ll][Aa][Tt][Ee])_)?([0-9]+)_([0-9]+)_(.+)$");
+  std::smatch m;
+  if (!std::regex_match(fileName, m, pattern)) return std::nullopt;
+  CanvasName n;
+  n.login = m[1].str();
+  n.late = m[2].matched;
+  n.userId = m[3].str();
+  n.submissionId = m[4].str();
+  std::tie(n.original, n.reupload) = withoutReupload(m[5].str());
+  return n;
+}
+
+// ---- finding the submissions ------------------------------------------------------------------
+
+namespace {
+
+bool sameFile(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  return !b.empty() && fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec);
+}
+
+// The folder of a Gradescope export: `input` itself, or its only sub-folder holding the
+// metadata (the export zip unzips to assignment_<id>_export/).
+fs::path gradescopeRoot(const fs::path& input, const fs::path& exclude) {
+  std::error_code ec;
+  if (fs::is_regular_file(input / "submission_metadata.yml", ec)) return input;
+  fs::path found;
+  int dirs = 0;
+  for (fs::directory_iterator it(input, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (!it->is_directory(ec) || it->is_symlink(ec) || name.empty() || name[0] == '.' ||
+        name == "__MACOSX" || sameFile(it->path(), exclude)) {
+      continue;
+    }
+    ++dirs;
+    if (fs::is_regular_file(it->path() / "submission_metadata.yml", ec)) found = it->path();
+  }
+  return dirs == 1 ? found : fs::path();
+}
+
+std::vector<fs::directory_entry> sortedEntries(const fs::path& dir, std::string& error) {
+  std::vector<fs::directory_entry> entries;
+  std::error_code ec;
+  fs::directory_iterator it(dir, ec);
+  if (ec) {
+    error = "cannot read " + dir.string() + ": " + ec.message();
+    return entries;
+  }
+  for (fs::directory_iterator end; !ec && it != end; it.increment(ec)) entries.push_back(*it);
+  if (ec) error = "cannot read " + dir.string() + ": " + ec.message();
+  std::sort(entries.begin(), entries.end(),
+            [](const fs::directory_entry& a, const fs::directory_entry& b) {
+              return a.path().filename() < b.path().filename();
+            });
+  return entries;
+}
+
+// Entries no student made: hidden files (.DS_Store, .git) and the __MACOSX folder of a zip made
+// on a Mac.
+bool systemEntry(const std::string& name, std::vector<std::string>& notes) {
+  if (name.empty() || name[0] == '.' || name == "__MACOSX") {
+    notes.push_back(name + ": hidden or operating-system files, not a submission: skipped");
+    return true;
+  }
+  return false;
+}
+
+void findPlain(const fs::path& input, const fs::path& exclude, Inventory& inv) {
+  for (const fs::directory_entry& e : sortedEntries(input, inv.error)) {
+    const std::string name = e.path().filename().string();
+    std::error_code ec;
+    const fs::file_status st = e.symlink_status(ec);
+    if (sameFile(e.path(), exclude)) continue;  // the output folder
+    if (systemEntry(name, inv.notes)) continue;
+    Submission s;
+    if (fs::is_directory(st)) {
+      s.key = safeName(name);
+      s.path = e.path();
+      s.people.push_back({name, "", ""});
+    } else if (fs::is_regular_file(st) && !archiveExtension(name).empty()) {
+      const std::string stem = name.substr(0, name.size() - archiveExtension(name).size());
+      s.key = safeName(stem);
+      s.path = e.path();
+      s.people.push_back({stem, "", ""});
+    } else {
+      inv.notes.push_back(name + ": " + describeEntry(st) +
+                          ", neither a folder nor an archive (.zip .tar .tar.gz .tgz): skipped");
+      continue;
+    }
+    inv.submissions.push_back(std::move(s));
+  }
+}
+
+// The submission in export folder or archive `path` (named `id`), its people from the metadata
+// (the folder's name when it names nobody), its key made of their names.
+Submission gradescopeSubmission(const std::string& id, const fs::path& path,
+                                const std::map<std::string, std::vector<Person>>& metadata) {
+  Submission s;
+  s.path = path;
+  const auto found = metadata.find(id);
+  if (found != metadata.end()) {
+    for (const Person& p : found->second) {
+      if (!p.name.empty() || !p.email.empty() || !p.sid.empty()) s.people.push_back(p);
+    }
+  } else {
+    s.notes.push_back(id + " is not in submission_metadata.yml");
+  }
+  if (s.people.empty()) {
+    s.people.push_back({id, "", ""});
+    if (found != metadata.end()) s.notes.push_back(id + " has no submitter in the metadata");
+  }
+  std::string base;
+  for (const Person& p : s.people) {
+    const std::string who = !p.name.empty() ? p.name : !p.sid.empty() ? p.sid : p.email;
+    base += (base.empty() ? "" : "-") + safeName(who);
+  }
+  s.key = safeName(base);
+  if (s.people.size() > 1) {
+    s.notes.push_back("a group submission of " + std::to_string(s.people.size()) +
+                      " students: one gradebook row each");
+  }
+  return s;
+}
+
+// The submission id of an export entry (submission_<id>, a folder or an archive), or "" (noted)
+// when it is none.
+std::string gradescopeId(const fs::directory_entry& e, Inventory& inv) {
+  const std::string name = e.path().filename().string();
+  std::error_code ec;
+  const fs::file_status st = e.symlink_status(ec);
+  const bool folder = fs::is_directory(st);
+  const bool archive = fs::is_regular_file(st) && !archiveExtension(name).empty();
+  const std::string id =
+      archive ? name.substr(0, name.size() - archiveExtension(name).size()) : name;
+  if ((!folder && !archive) || id.rfind("submission_", 0) != 0) {
+    inv.notes.push_back(name + ": " + describeEntry(st) +
+                        ", not a submission_<id> folder of the export: skipped");
+    return "";
+  }
+  return id;
+}
+
+void findGradescope(const fs::path& input, const fs::path& exclude, Inventory& inv) {
+  const fs::path root = gradescopeRoot(input, exclude);
+  if (root.empty()) {
+    inv.error = "no submission_metadata.yml in " + input.string() +
+                " (or in its only sub-folder): not a Gradescope export";
+    return;
+  }
+  const auto metadata = parseGradescopeMetadata(readAll(root / "submission_metadata.yml"));
+  if (metadata.empty()) {
+    inv.notes.push_back(
+        "submission_metadata.yml names no submission: the submitters' names are "
+        "those of the folders");
+  }
+  std::set<std::string> seen;
+  for (const fs::directory_entry& e : sortedEntries(root, inv.error)) {
+    const std::string name = e.path().filename().string();
+    if (name == "submission_metadata.yml" || sameFile(e.path(), exclude)) continue;
+    if (systemEntry(name, inv.notes)) continue;
+    const std::string id = gradescopeId(e, inv);
+    if (id.empty()) continue;
+    seen.insert(id);
+    inv.submissions.push_back(gradescopeSubmission(id, e.path(), metadata));
+  }
+  for (const auto& [id, people] : metadata) {
+    if (!seen.count(id)) {
+      inv.notes.push_back(id + " is in submission_metadata.yml but has no folder: not graded");
+    }
+  }
+}
+
+void findCanvas(const fs::path& input, const fs::path& exclude, Inventory& inv) {
+  struct File {
+    fs::path path;
+    CanvasName name;
+  };
+  std::map<std::pair<std::string, std::string>, std::vector<File>> byStudent;
+  for (const fs::directory_entry& e : sortedEntries(input, inv.error)) {
+    const std::string name = e.path().filename().string();
+    std::error_code ec;
+    const fs::file_status st = e.symlink_status(ec);
+    if (sameFile(e.path(), exclude) || systemEntry(name, inv.notes)) continue;
+    const auto parsed = fs::is_regular_file(st) ? parseCanvasName(name) : std::nullopt;
+    if (!parsed) {
+      inv.notes.push_back(name + ": " + describeEntry(st) +
+                          (fs::is_regular_file(st)
+                               ? ", not named <login>_<userid>_<submissionid>_<file> as Canvas "
+                                 "names them: skipped"
+                               : ", not a file of a Canvas download: skipped"));
+      continue;
+    }
+    byStudent[{parsed->login, parsed->userId}].push_back({e.path(), *parsed});
+  }
+  for (auto& [who, files] : byStudent) {
+    Submission s;
+    s.key = safeName(who.first);
+    s.people.push_back({who.first, "", who.second});
+    // Several uploads under one name: the latest wins (Canvas's -N suffix, then the id).
+    std::map<std::string, const File*> latest;
+    auto later = [](const File& a, const File& b) {
+      if (a.name.reupload != b.name.reupload) return a.name.reupload > b.name.reupload;
+      if (a.name.submissionId.size() != b.name.submissionId.size())
+        return a.name.submissionId.size() > b.name.submissionId.size();
+      return a.name.submissionId > b.name.submissionId;
+    };
+    bool late = false;
+    for (const File& f : files) {
+      late = late || f.name.late;
+      const File*& kept = latest[f.name.original];
+      if (kept == nullptr || later(f, *kept)) {
+        if (kept != nullptr) {
+          s.notes.push_back(kept->path.filename().string() + " replaced by the later upload " +
+                            f.path.filename().string());
+        }
+        kept = &f;
+      } else {
+        s.notes.push_back(f.path.filename().string() + " replaced by the later upload " +
+                          kept->path.filename().string());
+      }
+    }
+    for (const auto& [original, f] : latest) s.files.emplace_back(f->path, original);
+    if (late) s.notes.push_back("submitted late");
+    inv.submissions.push_back(std::move(s));
+  }
+}
+
+}  // namespace
+
+Layout detectLayout(const fs::path& input, const fs::path& exclude) {
+  if (!gradescopeRoot(input, exclude).empty()) return Layout::Gradescope;
+  std::string error;
+  int canvas = 0, other = 0;
+  for (const fs::directory_entry& e : sortedEntries(input, error)) {
+    std::error_code ec;
+    const fs::file_status st = e.symlink_status(ec);
+    const std::string name = e.path().filename().string();
+    if (name.empty() || name[0] == '.' || name == "__MACOSX" || sameFile(e.path(), exclude)) {
+      continue;
+    }
+    if (fs::is_directory(st)) return Layout::Plain;  // Canvas downloads are flat
+    if (fs::is_regular_file(st) && parseCanvasName(e.path().filename().string())) {
+      ++canvas;
+    } else {
+      ++other;
+    }
+  }
+  return canvas > 0 && canvas >= other ? Layout::Canvas : Layout::Plain;
+}
+
+Inventory findSubmissions(const fs::path& input, Layout layout, const fs::path& exclude) {
+  Inventory inv;
+  inv.layout = layout;
+  std::error_code ec;
+  if (!fs::is_directory(input, ec)) {
+    inv.error = input.string() + " is not a folder";
+    return inv;
+  }
+  switch (layout) {
+    case Layout::Plain:
+      findPlain(input, exclude, inv);
+      break;
+    case Layout::Gradescope:
+      findGradescope(input, exclude, inv);
+      break;
+    case Layout::Canvas:
+      findCanvas(input, exclude, inv);
+      break;
+  }
+  assignKeys(inv.submissions, inv.notes);
+  return inv;
+}
+
+std::string stage(Submission& submission, const fs::path& dir) {
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  fs::create_directories(dir, ec);
+  if (ec) return "cannot create " + dir.string() + ": " + ec.message();
+  for (const auto& [from, name] : submission.files) {
+    // The name is the student's: only its last component, made safe, is used.
+    const std::string target = safeName(fs::path(name).filename().string());
+    fs::copy_file(from, dir / target, fs::copy_options::overwrite_existing, ec);
+    if (ec)
+      return "cannot copy " + from.string() + " to " + (dir / target).string() + ": " +
+             ec.message();
+  }
+  // One archive uploaded alone is the submission itself (a6_grade does not open an archive
+  // inside a folder).
+  if (submission.files.size() == 1 && !archiveExtension(submission.files[0].second).empty()) {
+    submission.path = dir / safeName(fs::path(submission.files[0].second).filename().string());
+  } else {
+    submission.path = dir;
+  }
+  return "";
+}
+
+std::string fingerprint(const Submission& submission, const std::string& options) {
+  Hash h;
+  h.add(options);
+  std::error_code ec;
+  if (!submission.files.empty()) {
+    for (const auto& [from, name] : submission.files) {
+      h.add(name);
+      h.addFile(from);
+    }
+    return h.hex();
+  }
+  const fs::file_status st = fs::symlink_status(submission.path, ec);
+  if (!fs::is_directory(st)) {
+    h.add("file");
+    h.addFile(submission.path);
+    return h.hex();
+  }
+  std::vector<fs::path> entries;
+  for (fs::recursive_directory_iterator it(submission.path, ec), end; !ec && it != end;
+       it.increment(ec)) {
+    entries.push_back(it->path());
+  }
+  std::sort(entries.begin(), entries.end());
+  for (const fs::path& p : entries) {
+    const fs::file_status s = fs::symlink_status(p, ec);
+    h.add(p.lexically_relative(submission.path).string());
+    if (fs::is_symlink(s)) {
+      h.add("link " + fs::read_symlink(p, ec).string());
+    } else if (fs::is_regular_file(s)) {
+      h.add("file");
+      h.addFile(p);
+    } else {
+      h.add(fs::is_directory(s) ? "dir" : "other");
+    }
+  }
+  return h.hex();
+}
+
+}  // namespace a6::grader::batch
