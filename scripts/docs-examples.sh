@@ -355,7 +355,7 @@ check_handout_images() {
 check_words() {
   local stale
   stale=$(git ls-files -z -- . ':!tests/wrong' ':!tests/bench/results' ':!docs/test-costs.md' 2>/dev/null |
-    xargs -0 grep -nIiE '\bsix (task |student |\.cpp |`\.cpp` )?(files|objects)\b' 2>/dev/null)
+    xargs -0 grep -nIiE '\bsix (task |student |\.cpp |`\.cpp` )?(files|objects|tasks)\b|\ball six\b' 2>/dev/null)
   if [ -n "$stale" ]; then
     fail "these count the task files as six; there are seven:"$'\n'"$stale"
   else
@@ -365,6 +365,24 @@ check_words() {
 
 check_examples
 check_words
+
+# grader/DESIGN.md's diagram names the grader's folders as they are: every folder of grader/ is
+# in it (in the column of folders: two blanks on each side), and every folder it names exists.
+check_design_folders() {
+  local diagram named folder bad=0
+  diagram=$(awk '/^```/ { n++; next } n == 1' grader/DESIGN.md)
+  named=$(grep -oE '  [a-z_]+/  ' <<<"$diagram" | tr -d ' /' | sort -u)
+  for folder in $(git ls-files grader | awk -F/ 'NF > 2 { print $2 }' | sort -u); do
+    grep -qx "$folder" <<<"$named" ||
+      { fail "grader/DESIGN.md's diagram does not name the folder grader/$folder/"; bad=1; }
+  done
+  for folder in $named; do
+    [ -d "grader/$folder" ] ||
+      { fail "grader/DESIGN.md's diagram names grader/$folder/, which does not exist"; bad=1; }
+  done
+  [ "$bad" = 1 ] || echo "ok: grader/DESIGN.md's diagram names the $(wc -w <<<"$named") folders of grader/"
+}
+check_design_folders
 check_facts
 check_handout_images
 [ "$failures" -eq 0 ] || { echo "docs-examples: $failures problems" >&2; exit 1; }
