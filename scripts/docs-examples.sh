@@ -357,7 +357,7 @@ check_words() {
   stale=$(git ls-files -z -- . ':!tests/wrong' ':!tests/bench/results' ':!docs/test-costs.md' 2>/dev/null |
     xargs -0 grep -nIiE '\bsix (task |student |\.cpp |`\.cpp` )?(files|objects|tasks)\b|\ball six\b' 2>/dev/null)
   if [ -n "$stale" ]; then
-    fail "these count the task files as six; there are seven:"$'\n'"$stale"
+    fail "these count the task files or the tasks as six; there are seven:"$'\n'"$stale"
   else
     echo "ok: nothing counts the task files as six"
   fi
@@ -366,19 +366,25 @@ check_words() {
 check_examples
 check_words
 
-# grader/DESIGN.md's diagram names the grader's folders as they are: every folder of grader/ is
-# in it (in the column of folders: two blanks on each side), and every folder it names exists.
+# grader/DESIGN.md's diagram names the grader's folders as they are: its column of folders (from
+# the 17th character of a line, as "  1. intake     intake/") holds every folder of grader/ that
+# git knows, and nothing else.
 check_design_folders() {
-  local diagram named folder bad=0
+  local diagram named known folder bad=0
   diagram=$(awk '/^```/ { n++; next } n == 1' grader/DESIGN.md)
-  named=$(grep -oE '  [a-z_]+/  ' <<<"$diagram" | tr -d ' /' | sort -u)
-  for folder in $(git ls-files grader | awk -F/ 'NF > 2 { print $2 }' | sort -u); do
-    grep -qx "$folder" <<<"$named" ||
+  named=$(sed -nE 's|^  .{14}([A-Za-z0-9_.-]+)/( .*)?$|\1|p' <<<"$diagram" | sort -u)
+  known=$(git ls-files grader | awk -F/ 'NF > 2 { print $2 }' | sort -u)
+  if [ -z "$known" ] || [ -z "$named" ]; then
+    fail "grader/DESIGN.md's diagram or git's list of grader/ is empty (not a checkout?)"
+    return
+  fi
+  for folder in $known; do
+    grep -qx -- "$folder" <<<"$named" ||
       { fail "grader/DESIGN.md's diagram does not name the folder grader/$folder/"; bad=1; }
   done
   for folder in $named; do
-    [ -d "grader/$folder" ] ||
-      { fail "grader/DESIGN.md's diagram names grader/$folder/, which does not exist"; bad=1; }
+    grep -qx -- "$folder" <<<"$known" ||
+      { fail "grader/DESIGN.md's diagram names grader/$folder/, which git does not know"; bad=1; }
   done
   [ "$bad" = 1 ] || echo "ok: grader/DESIGN.md's diagram names the $(wc -w <<<"$named") folders of grader/"
 }

@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "checks/outcome.h"
 #include "checks/scene_run.h"
 #include "checks/transcript.h"
 #include "harness/student_code.h"
-#include "report/report.h"
 #include "scoring/rubric.h"
 
 namespace a6::grader {

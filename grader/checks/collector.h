@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "report/report.h"
+#include "checks/outcome.h"
 #include "scoring/rubric.h"
 
 namespace a6::grader {

@@ -1,6 +1,6 @@
 // FNV-1a, 64 bits: a quick hash that notices a changed text, and names a file by one. Not a
 // defence against forgery: a caller that must not be fooled compares the bytes themselves
-// (build/build.cpp's known objects), or hashes only what the TA owns (batch/batch.cpp's
+// (build/build.cpp's known objects), or hashes only what the TA owns (batch/layouts.cpp's
 // fingerprints).
 #pragma once
 

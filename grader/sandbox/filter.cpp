@@ -1,5 +1,6 @@
 // The seccomp program every sandboxed child gets (plan.h): allow by default; no sockets, no
 // io_uring, no ptrace or cross-process memory, and for the probe no new processes.
+#include <sched.h>
 #include <seccomp.h>
 #include <sys/mman.h>
 #include <unistd.h>

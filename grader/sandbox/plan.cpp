@@ -21,6 +21,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Whether path is folder or inside it (lexically).
+bool within(const fs::path& path, const fs::path& folder) {
+  auto p = path.begin();
+  for (auto f = folder.begin(); f != folder.end(); ++f, ++p) {
+    if (p == path.end() || *p != *f) return false;
+  }
+  return true;
+}
+
 const char* limitName(int resource) {
   switch (resource) {
     case RLIMIT_CPU:
@@ -363,14 +372,6 @@ std::string describeProcessStep(const Record& r, const Plan& plan, const Sandbox
 }
 
 }  // namespace
-
-bool within(const fs::path& path, const fs::path& folder) {
-  auto p = path.begin();
-  for (auto f = folder.begin(); f != folder.end(); ++f, ++p) {
-    if (p == path.end() || *p != *f) return false;
-  }
-  return true;
-}
 
 void deleteWorkDir(const std::string& dir) {
   if (dir.empty()) return;

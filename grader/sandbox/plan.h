@@ -110,8 +110,6 @@ struct Plan {
 std::string makePlan(const SandboxSpec& spec, Plan& plan);
 // plan.cpp: the sentence for a record the child sent.
 std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec& spec);
-// plan.cpp: whether path is folder or inside it (lexically).
-bool within(const std::filesystem::path& path, const std::filesystem::path& folder);
 // plan.cpp: removes a work folder the plan made.
 void deleteWorkDir(const std::string& dir);
 // filter.cpp: the seccomp program (built once per kind), or empty with error set.

@@ -2,8 +2,9 @@
 // fresh empty working directory, no network, captured and capped output, privileges dropped
 // when the grader runs as root. See docs/instructor.md for what this does and does not protect.
 //
-// Design note: what the child gets, in order (grader/sandbox/plan.cpp prepares everything before
-// fork(), so the child between fork and exec, child.cpp, only makes system calls):
+// Design note: what the child gets, in order (everything is prepared before fork(): the plan in
+// plan.cpp, the keeper and the fds in sandbox.cpp; the child between fork and exec, child.cpp,
+// only makes system calls):
 //   0. as root, a pid namespace of its own: the child is its init (the keeper), and the program
 //      runs as the keeper's child. Whatever the program starts (a new session, a daemon, any
 //      name) stays in the namespace and is ended by the kernel when the keeper ends, and no

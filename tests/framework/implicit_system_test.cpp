@@ -115,14 +115,14 @@ TEST(ImplicitSystem, SolvesANonSymmetricSystem) {
 void refill(ImplicitSystem& system, const Both& both) {
   const int n = static_cast<int>(both.b.size()) / 2;
   system.reset(n);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const Mat2 block = both.a.block<2, 2>(2 * i, 2 * j);
-      if (!block.isZero()) system.addBlock(i, j, block);
+  for (int col = 0; col < n; ++col) {
+    for (int row = 0; row < n; ++row) {
+      const Mat2 block = both.a.block<2, 2>(2 * row, 2 * col);
+      if (!block.isZero()) system.addBlock(row, col, block);
     }
   }
-  for (int i = 0; i < n; ++i) system.addToB(i, both.b.segment<2>(2 * i));
-  for (const int i : both.fixes) system.fix(i);
+  for (int row = 0; row < n; ++row) system.addToB(row, both.b.segment<2>(2 * row));
+  for (const int fixed : both.fixes) system.fix(fixed);
 }
 
 Eigen::VectorXd freshAnswer(const Both& both) {
