@@ -21,15 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Whether path is folder or inside it (lexically).
-bool within(const fs::path& path, const fs::path& folder) {
-  auto p = path.begin();
-  for (auto f = folder.begin(); f != folder.end(); ++f, ++p) {
-    if (p == path.end() || *p != *f) return false;
-  }
-  return true;
-}
-
 const char* limitName(int resource) {
   switch (resource) {
     case RLIMIT_CPU:
@@ -194,7 +185,7 @@ void planReveals(const std::vector<fs::path>& reveals, const std::vector<fs::pat
                  Plan& plan) {
   for (const fs::path& path : reveals) {
     if (std::none_of(hidden.begin(), hidden.end(),
-                     [&](const fs::path& h) { return within(path, h); })) {
+                     [&](const fs::path& h) { return isWithin(path, h); })) {
       continue;
     }
     MountOp op;
