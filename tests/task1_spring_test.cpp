@@ -33,7 +33,7 @@ Tolerance tol(const harness::SpringForceRequest& r) {
 }
 
 Vec2 forceOf(const harness::SpringForceRequest& r) {
-  const harness::SpringForceResult result = student().springForce(r);
+  const harness::SpringForceResult result = student().ask(r);
   A6_EXPECT_RAN(result);
   return result.force;
 }

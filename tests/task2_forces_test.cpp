@@ -53,7 +53,7 @@ Tolerance tol(const harness::ForcesRequest& r) {
 }
 
 harness::ForcesResult forcesOf(const harness::ForcesRequest& r) {
-  harness::ForcesResult result = student().forces(r);
+  harness::ForcesResult result = student().ask(r);
   A6_EXPECT_RAN(result);
   return result;
 }

@@ -123,7 +123,7 @@ Tolerance velocityTol(const SimulateRequest& r, const Vec2& expected, int steps)
 
 // Runs the request and checks that every frame was recorded.
 #define A6_SIMULATE(result, req)                                                            \
-  const SimulateResult result = student().simulate(req);                                    \
+  const SimulateResult result = student().ask(req);                                         \
   ASSERT_TRUE(recorded(                                                                     \
       result,                                                                               \
       static_cast<std::size_t>(((req).frames + (req).recordEvery - 1) / (req).recordEvery), \
@@ -521,7 +521,7 @@ std::string substepHint(const SimulateRequest& r,
   steps.frameDt = r.frameDt / r.substeps;
   steps.frames = r.frames * r.substeps;
   steps.recordEvery = steps.frames;
-  const SimulateResult stepped = student().simulate(steps);
+  const SimulateResult stepped = student().ask(steps);
   if (!stepped.ok() || stepped.states.empty()) {
     return hint(
         "advance(frameDt, n) must take n steps of frameDt / n, and each step must be "

@@ -59,7 +59,7 @@ harness::ParticlesResult emit(const EmitterSpec& spec, std::uint64_t seed, int c
   request.spec = spec;
   request.seed = seed;
   request.count = count;
-  return student().emit(request);
+  return student().ask(request);
 }
 
 double mean(const std::vector<double>& xs) {
@@ -358,9 +358,7 @@ std::string input(const harness::ParticleRunRequest& r) {
   return out.str();
 }
 
-harness::ParticlesResult simulate(const harness::ParticleRunRequest& r) {
-  return student().runParticles(r);
-}
+harness::ParticlesResult simulate(const harness::ParticleRunRequest& r) { return student().ask(r); }
 
 TEST(Task5Particles, EmitsRateTimesDtParticlesPerStep) {
   auto r = run({}, 12);

@@ -33,7 +33,7 @@ Box2DResult runScene(const std::string& scene, int steps, std::vector<DragEvent>
   request.scene = scene;
   request.steps = steps;
   request.drag = std::move(drag);
-  return student().runBox2D(request);
+  return student().ask(request);
 }
 
 std::string bodyName(const Box2DResult& r, int index) {

@@ -54,7 +54,7 @@ std::string matrix(const Mat2& m) {
 
 SpringForceResult jacobiansOf(SpringForceRequest r) {
   r.jacobians = true;
-  return student().springForce(r);
+  return student().ask(r);
 }
 
 // |actual - hand| <= tol entry by entry; the message names the matrix, both values and the input.
@@ -183,7 +183,7 @@ bool forceIsRight(const KnownSpring& s) {
   const SpringForceRequest& r = s.request;
   const double scale = r.ks * std::max((r.p2.x - r.p1.x).norm(), r.restLength) + r.kd;
   const auto right = [&](const SpringForceRequest& q, const Vec2& force) {
-    const SpringForceResult own = student().springForce(q);
+    const SpringForceResult own = student().ask(q);
     return own.ok() && (own.force - force).norm() <= 1e-9 * scale;
   };
   bool ok = right(r, s.force);
@@ -199,7 +199,7 @@ bool forceIsRight(const KnownSpring& s) {
 template <typename Change>
 Vec2 forceAfter(SpringForceRequest r, Change&& change, bool& ran) {
   change(r);
-  const SpringForceResult f = student().springForce(r);
+  const SpringForceResult f = student().ask(r);
   ran = ran && f.ok();
   return f.force;
 }
@@ -359,7 +359,7 @@ TEST(Task7Implicit, OneStepOfALinearSpringIsBackwardEuler) {
   ManyInputs inputs("the particle after one stepImplicit", kMetre);
   for (const Case& c : cases) {
     const SimulateRequest r = anchored(c.m, c.ks, c.kd, c.u0, c.w0, c.dt, 1);
-    const SimulateResult result = student().simulate(r);
+    const SimulateResult result = student().ask(r);
     ASSERT_TRUE(ranAll(r, result));
     const double v1 = (c.m * c.w0 - c.dt * c.ks * c.u0) / (c.m + c.dt * c.kd + c.dt * c.dt * c.ks);
     const Particle& p = result.states[0][1];
@@ -380,7 +380,7 @@ TEST(Task7Implicit, TheUndampedOscillatorLosesEnergyByTheExactFactor) {
   for (const double hOmega : {0.5, 3.0}) {
     const double m = 0.5, ks = 200, omega = std::sqrt(ks / m), h = hOmega / omega;
     SimulateRequest r = anchored(m, ks, 0, 0.2, 1.0, h, 12);
-    const SimulateResult result = student().simulate(r);
+    const SimulateResult result = student().ask(r);
     ASSERT_TRUE(ranAll(r, result));
     const auto energy = [&](const Particle& p) {
       const double u = p.x.x() - 1;
@@ -409,7 +409,7 @@ TEST(Task7Implicit, PinnedParticlesStay) {
       {springData(0, 1, 0.3, 500, 1), springData(1, 2, 0.3, 500, 1), springData(2, 3, 0.3, 500, 1)},
       1.0 / 60, 10);
   r.env.gravity = Vec2(0, -9.81);
-  const SimulateResult result = student().simulate(r);
+  const SimulateResult result = student().ask(r);
   ASSERT_TRUE(ranAll(r, result));
   ManyInputs inputs("the pinned particle", kMetre);
   for (int k = 0; k < r.frames; ++k) {
@@ -447,7 +447,7 @@ TEST(Task7Implicit, AFreeSystemKeepsItsMomentum) {
   // (The angular momentum is no law of the linearised step: the across-the-spring part of dfdx
   // turns the forces.)
   SimulateRequest r = freeTriangle(2, 0.05, 30);
-  const SimulateResult result = student().simulate(r);
+  const SimulateResult result = student().ask(r);
   ASSERT_TRUE(ranAll(r, result));
   const Vec2 p0 = momentumOf(r.particles);
   double mass = 0, scale = 0;
@@ -485,7 +485,7 @@ Eigen::VectorXd velocityAfterOneStep(const SimulateRequest& base, const Eigen::V
                                      bool& ran) {
   SimulateRequest r = base;
   for (std::size_t i = 0; i < r.particles.size(); ++i) r.particles[i].v = v.segment<2>(2 * i);
-  const SimulateResult result = student().simulate(r);
+  const SimulateResult result = student().ask(r);
   Eigen::VectorXd out = Eigen::VectorXd::Zero(v.size());
   ran = ran && ranAll(r, result);
   if (!ran) return out;
@@ -597,7 +597,7 @@ TEST(Task7Implicit, TheStiffClothStaysTogetherInOneStepPerFrame) {
   // least 5 cm lower than it started (the solution: 10 cm).
   SimulateRequest r = stiffCloth(8, 1.0 / 60, 120);
   r.recordEvery = 1;
-  const SimulateResult result = student().simulate(r);
+  const SimulateResult result = student().ask(r);
   ASSERT_TRUE(ranAll(r, result));
   ManyInputs inputs("the stiff cloth after 2 s of one stepImplicit(1/60 s) per frame", kMetre);
   const std::vector<Particle>& last = result.states.back();
@@ -648,7 +648,7 @@ TEST(Task7Implicit, TinyStepsAgreeWithSymplecticEulerToFirstOrder) {
   ManyInputs positions("x1 - x0, which must be h v1 (the NEW velocity)", kMetre);
   for (const double h : {1e-3, 5e-4, 2.5e-4}) {
     const SimulateRequest r = run(h);
-    const SimulateResult result = student().simulate(r);
+    const SimulateResult result = student().ask(r);
     ASSERT_TRUE(ranAll(r, result));
     double error = 0;
     for (std::size_t k = 0; k < r.particles.size(); ++k) {

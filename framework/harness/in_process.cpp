@@ -164,7 +164,16 @@ class InProcess final : public StudentCode {
  public:
   explicit InProcess(ForceModel reference) : reference_(std::move(reference)) {}
 
-  SpringForceResult springForce(const SpringForceRequest& request) override {
+ private:
+  Answer respond(const Request& request) override {
+    return std::visit([this](const auto& r) { return answerTo<std::decay_t<decltype(r)>>(run(r)); },
+                      request);
+  }
+
+  // One student call per request kind: builds the framework objects from the request's plain
+  // data, calls the student's functions, and turns what they produced back into plain data.
+
+  SpringForceResult run(const SpringForceRequest& request) {
     return guarded<SpringForceResult>([&](SpringForceResult& result) {
       Particle p1 = request.p1, p2 = request.p2;
       Spring s;
@@ -183,7 +192,7 @@ class InProcess final : public StudentCode {
     });
   }
 
-  ForcesResult forces(const ForcesRequest& request) override {
+  ForcesResult run(const ForcesRequest& request) {
     return guarded<ForcesResult>([&](ForcesResult& result) {
       const Particle& p = request.particle;
       const Environment& env = request.env;
@@ -195,7 +204,7 @@ class InProcess final : public StudentCode {
     });
   }
 
-  SimulateResult simulate(const SimulateRequest& request) override {
+  SimulateResult run(const SimulateRequest& request) {
     return guarded<SimulateResult>([&](SimulateResult& result) {
       MassSpringSystem system;
       system.env = request.env;
@@ -215,7 +224,7 @@ class InProcess final : public StudentCode {
     });
   }
 
-  ClothResult buildCloth(const ClothSpec& spec) override {
+  ClothResult run(const ClothRequest& request) {
     return guarded<ClothResult>([&](ClothResult& result) {
       MassSpringSystem system;
       const ClothPrelude& prelude = clothPrelude();
@@ -223,13 +232,13 @@ class InProcess final : public StudentCode {
       for (const SpringData& s : prelude.springs) {
         system.addSpring(s.i, s.j, s.ks, s.kd, s.type, s.restLength);
       }
-      a6::buildCloth(system, spec);
+      a6::buildCloth(system, request.spec);
       result.particles.assign(system.particles.begin(), system.particles.end());
       result.springs = springsAsData(system);
     });
   }
 
-  ParticlesResult emit(const EmitRequest& request) override {
+  ParticlesResult run(const EmitRequest& request) {
     return guarded<ParticlesResult>([&](ParticlesResult& result) {
       Random rng(request.seed);
       for (int k = 0; k < request.count; ++k) {
@@ -238,7 +247,7 @@ class InProcess final : public StudentCode {
     });
   }
 
-  ParticlesResult runParticles(const ParticleRunRequest& request) override {
+  ParticlesResult run(const ParticleRunRequest& request) {
     return guarded<ParticlesResult>([&](ParticlesResult& result) {
       ParticleSystem system(request.seed);
       system.emitter = request.emitter;
@@ -254,7 +263,7 @@ class InProcess final : public StudentCode {
     });
   }
 
-  Box2DResult runBox2D(const Box2DRequest& request) override {
+  Box2DResult run(const Box2DRequest& request) {
     return guarded<Box2DResult>([&](Box2DResult& result) {
       std::unique_ptr<Box2DScene> scene = makeBox2DScene(request.scene);
       if (!scene) {
@@ -303,7 +312,7 @@ class InProcess final : public StudentCode {
     });
   }
 
-  SceneResult runScene(const SceneRequest& request) override {
+  SceneResult run(const SceneRequest& request) {
     return guarded<SceneResult>([&](SceneResult& result) {
       constexpr int kMaxFrames = 36000;  // ten minutes at 60 frames per second
       int last = 0;
@@ -337,7 +346,6 @@ class InProcess final : public StudentCode {
     });
   }
 
- private:
   ForceModel reference_;
 };
 

@@ -6,11 +6,21 @@
 // suite against a probe process that links the student's files and answers these requests
 // over a pipe, so student code never runs in the process that decides the grade. Hence every
 // request and result is plain data (no pointers, no callbacks): it must serialise.
+//
+// Design note: one request type.
+// The requests are one std::variant (Request), answered by one call (ask); every
+// layer between a test and the student's functions (the wire, the probe, the time budget, the
+// transcript) is one function over it, so none of them names the kinds. Adding a kind takes its
+// struct here (in Request, with its Result and kKind), its field list (wire_fields.h) and its
+// student call (in_process.cpp).
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "a6/cloth.h"
@@ -58,8 +68,21 @@ struct Outcome {
   }
 };
 
+// Each request kind is a plain struct: its answer type (Result), its name on the wire (kKind),
+// and its fields (harness/wire_fields.h). Request and Answer below list the kinds, and the
+// in-process implementation (in_process.cpp) is the student call each one makes.
+struct SpringForceResult;
+struct ForcesResult;
+struct SimulateResult;
+struct ClothResult;
+struct ParticlesResult;
+struct Box2DResult;
+struct SceneResult;
+
 // Task 1 ---------------------------------------------------------------------------------------
 struct SpringForceRequest {
+  using Result = SpringForceResult;
+  static constexpr const char* kKind = "springForce";
   Particle p1, p2;
   double restLength = 0, ks = 0, kd = 0;
   bool jacobians = false;  ///< task 7: springJacobians() instead of computeForce()
@@ -72,6 +95,8 @@ struct SpringForceResult : Outcome {
 
 // Task 2 ---------------------------------------------------------------------------------------
 struct ForcesRequest {
+  using Result = ForcesResult;
+  static constexpr const char* kKind = "forces";
   Particle particle;
   Environment env;
   Contact contact;  ///< the contact handed to repulsionForce on its own
@@ -84,6 +109,8 @@ struct ForcesResult : Outcome {
 
 // Task 3 ---------------------------------------------------------------------------------------
 struct SimulateRequest {
+  using Result = SimulateResult;
+  static constexpr const char* kKind = "simulate";
   std::vector<Particle> particles;
   std::vector<SpringData> springs;
   Environment env;
@@ -123,6 +150,11 @@ inline const ClothPrelude& clothPrelude() {
   }();
   return prelude;
 }
+struct ClothRequest {
+  using Result = ClothResult;
+  static constexpr const char* kKind = "buildCloth";
+  ClothSpec spec;  ///< buildCloth(system, spec) on a system holding clothPrelude()
+};
 struct ClothResult : Outcome {
   std::vector<Particle> particles;  ///< the prelude's, then the cloth's
   std::vector<SpringData> springs;  ///< the prelude's, then the cloth's
@@ -130,6 +162,8 @@ struct ClothResult : Outcome {
 
 // Task 5 ---------------------------------------------------------------------------------------
 struct EmitRequest {
+  using Result = ParticlesResult;
+  static constexpr const char* kKind = "emit";
   EmitterSpec spec;
   std::uint64_t seed = 1;
   int count = 1;
@@ -139,6 +173,8 @@ struct ParticlesResult : Outcome {
   std::vector<int> counts;  ///< number of live particles after every step (update runs only)
 };
 struct ParticleRunRequest {
+  using Result = ParticlesResult;
+  static constexpr const char* kKind = "runParticles";
   EmitterSpec emitter;
   Environment env;
   double coolingRate = 1;
@@ -157,6 +193,8 @@ struct DragEvent {
   Vec2 target = Vec2::Zero();  ///< m, world frame
 };
 struct Box2DRequest {
+  using Result = Box2DResult;
+  static constexpr const char* kKind = "runBox2D";
   std::string scene;
   int steps = 60;
   std::vector<DragEvent> drag;
@@ -207,6 +245,8 @@ struct Box2DResult : Outcome {
 
 // Scenes (scenes/scene.h): what golden images are rendered from -------------------------------
 struct SceneRequest {
+  using Result = SceneResult;
+  static constexpr const char* kKind = "runScene";
   std::string scene;        ///< a name from sceneNames()
   std::vector<int> frames;  ///< record a snapshot after each of these frame counts (0: the
                             ///< initial state); any order, repeats allowed
@@ -221,26 +261,71 @@ struct SceneResult : Outcome {
   std::vector<SceneEnergy> energies;
 };
 
-/// The student's code. Every call catches what it can and reports it in `error`.
+/// Every request, one type: a request kind is one of these alternatives.
+using Request = std::variant<SpringForceRequest, ForcesRequest, SimulateRequest, ClothRequest,
+                             EmitRequest, ParticleRunRequest, Box2DRequest, SceneRequest>;
+
+/// Every answer, one type: the answer to a request holds that request's Result, at the same
+/// index (two kinds may share a Result type, so the index says which request it answers).
+template <class Requests>
+struct AnswersTo;
+template <class... Kinds>
+struct AnswersTo<std::variant<Kinds...>> {
+  using type = std::variant<typename Kinds::Result...>;
+};
+using Answer = AnswersTo<Request>::type;
+
+/// The index of request kind R in Request (and of its answer in Answer).
+template <class R, class... Kinds>
+constexpr std::size_t indexIn(const std::variant<Kinds...>*) {
+  constexpr bool same[] = {std::is_same_v<R, Kinds>...};
+  std::size_t k = 0;
+  while (k < sizeof...(Kinds) && !same[k]) ++k;
+  return k;
+}
+template <class R>
+constexpr std::size_t kKindOf = indexIn<R>(static_cast<const Request*>(nullptr));
+
+/// The answer to a request of kind R that holds `result`.
+template <class R>
+Answer answerTo(typename R::Result result) {
+  return Answer(std::in_place_index<kKindOf<R>>, std::move(result));
+}
+/// The outcome every answer carries.
+inline Outcome& outcomeOf(Answer& answer) {
+  return std::visit([](auto& a) -> Outcome& { return a; }, answer);
+}
+inline const Outcome& outcomeOf(const Answer& answer) {
+  return std::visit([](const auto& a) -> const Outcome& { return a; }, answer);
+}
+/// An answer to `request` that holds only `outcome` (a request that failed before any answer).
+inline Answer failedAnswer(const Request& request, Outcome outcome) {
+  return std::visit(
+      [&](const auto& r) {
+        typename std::decay_t<decltype(r)>::Result result;
+        static_cast<Outcome&>(result) = std::move(outcome);
+        return answerTo<std::decay_t<decltype(r)>>(std::move(result));
+      },
+      request);
+}
+
+/// The student's code: answers requests. Each implementation catches what it can and reports
+/// it in the answer's outcome.
 class StudentCode {
  public:
   virtual ~StudentCode() = default;
-  virtual SpringForceResult springForce(const SpringForceRequest& request) = 0;
-  virtual ForcesResult forces(const ForcesRequest& request) = 0;
-  virtual SimulateResult simulate(const SimulateRequest& request) = 0;
-  virtual ClothResult buildCloth(const ClothSpec& spec) = 0;
-  virtual ParticlesResult emit(const EmitRequest& request) = 0;
-  virtual ParticlesResult runParticles(const ParticleRunRequest& request) = 0;
-  virtual Box2DResult runBox2D(const Box2DRequest& request) = 0;
-  /// Runs a registered scene with the student's code and records snapshots. Implementations
-  /// that cannot run scenes answer with an error. Defined inline so that the class has no key
-  /// function in a6_framework: the grader implements it without linking student code.
-  virtual SceneResult runScene(const SceneRequest& request) {
-    SceneResult result;
-    result.fail(Fault::Refused,
-                "runScene('" + request.scene + "') is not supported by this implementation");
-    return result;
+
+  /// The answer to `request`, at the request's index.
+  Answer ask(const Request& request) { return respond(request); }
+  /// The typed form: code.ask(SpringForceRequest{...}) gives a SpringForceResult.
+  template <class R>
+  typename R::Result ask(const R& request) {
+    return std::get<kKindOf<R>>(respond(Request(std::in_place_index<kKindOf<R>>, request)));
   }
+
+ private:
+  /// What each implementation defines: one function over every kind.
+  virtual Answer respond(const Request& request) = 0;
 };
 
 /// The in-process implementation: calls the seven files linked into this binary. `reference`

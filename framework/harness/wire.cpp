@@ -271,8 +271,6 @@ T decodeAsValue(const json& j) {
   return x;
 }
 
-json request(const char* kind, json body) { return {{"kind", kind}, {"body", std::move(body)}}; }
-
 // The faults a probe may report: what its own code saw. The others are the grader's findings
 // about the probe (a crash, a time-out, garbage), which a probe must not claim.
 const char* faultName(harness::Fault fault) {
@@ -353,14 +351,9 @@ double decodeDouble(const json& j) {
   throw Malformed(std::string("expected a number, got ") + j.type_name());
 }
 
-// Requests ---------------------------------------------------------------------------------------
+// Requests and answers, any kind ---------------------------------------------------------------
 
 namespace {
-
-template <typename T>
-T decodeBody(const char* what, const json& j) {
-  return decodeAs(what, [&] { return decodeAsValue<T>(j); });
-}
 
 // A result: its outcome, then its fields (an error alone is a whole result).
 template <typename Result>
@@ -371,7 +364,7 @@ json encodeOutcomeAnd(const Result& r) {
   return out;
 }
 template <typename Result>
-Result decodeResult(const char* what, const json& j) {
+Result decodeOutcomeAnd(const char* what, const json& j) {
   return decodeAs(what, [&] {
     Result r;
     if (startResult(j, r)) return r;
@@ -381,103 +374,72 @@ Result decodeResult(const char* what, const json& j) {
   });
 }
 
+template <std::size_t K>
+using KindAt = std::variant_alternative_t<K, harness::Request>;
+
+// The request body of kind K, or nothing when `kind` names another.
+template <std::size_t K>
+bool decodeIfKind(const std::string& kind, const json& body, harness::Request& out) {
+  if (kind != KindAt<K>::kKind) return false;
+  out.emplace<K>(within(kind, [&] { return decodeAsValue<KindAt<K>>(body); }));
+  return true;
+}
+template <std::size_t... K>
+harness::Request decodeKind(const std::string& kind, const json& body, std::index_sequence<K...>) {
+  harness::Request out;
+  if (!(decodeIfKind<K>(kind, body, out) || ...)) {
+    throw Malformed("the probe does not know the request kind '" + kind.substr(0, 40) + "'");
+  }
+  return out;
+}
+
+// The answer to a request of kind K.
+template <std::size_t K>
+harness::Answer decodeAnswerOf(const json& j) {
+  using Result = typename KindAt<K>::Result;
+  const std::string what = std::string("the answer to ") + KindAt<K>::kKind;
+  return harness::Answer(std::in_place_index<K>, decodeOutcomeAnd<Result>(what.c_str(), j));
+}
+template <std::size_t... K>
+harness::Answer decodeAnswerAt(std::size_t kind, const json& j, std::index_sequence<K...>) {
+  using Decode = harness::Answer (*)(const json&);
+  static constexpr Decode kDecoders[] = {&decodeAnswerOf<K>...};
+  if (kind >= sizeof...(K)) throw Malformed("no request kind has index " + std::to_string(kind));
+  return kDecoders[kind](j);
+}
+
+constexpr auto kKinds = std::make_index_sequence<std::variant_size_v<harness::Request>>();
+
 }  // namespace
 
-json encodeSpringForce(const harness::SpringForceRequest& r) {
-  return request("springForce", encodeValue(r));
-}
-json encodeForces(const harness::ForcesRequest& r) { return request("forces", encodeValue(r)); }
-json encodeSimulate(const harness::SimulateRequest& r) {
-  return request("simulate", encodeValue(r));
-}
-json encodeBuildCloth(const ClothSpec& spec) { return request("buildCloth", encodeValue(spec)); }
-json encodeEmit(const harness::EmitRequest& r) { return request("emit", encodeValue(r)); }
-json encodeRunParticles(const harness::ParticleRunRequest& r) {
-  return request("runParticles", encodeValue(r));
-}
-json encodeRunBox2D(const harness::Box2DRequest& r) { return request("runBox2D", encodeValue(r)); }
-json encodeRunScene(const harness::SceneRequest& r) { return request("runScene", encodeValue(r)); }
-
-harness::SpringForceRequest decodeSpringForceRequest(const json& j) {
-  return decodeBody<harness::SpringForceRequest>("SpringForceRequest", j);
-}
-harness::ForcesRequest decodeForcesRequest(const json& j) {
-  return decodeBody<harness::ForcesRequest>("ForcesRequest", j);
-}
-harness::SimulateRequest decodeSimulateRequest(const json& j) {
-  return decodeBody<harness::SimulateRequest>("SimulateRequest", j);
-}
-ClothSpec decodeBuildClothRequest(const json& j) { return decodeBody<ClothSpec>("ClothSpec", j); }
-harness::EmitRequest decodeEmitRequest(const json& j) {
-  return decodeBody<harness::EmitRequest>("EmitRequest", j);
-}
-harness::ParticleRunRequest decodeRunParticlesRequest(const json& j) {
-  return decodeBody<harness::ParticleRunRequest>("ParticleRunRequest", j);
-}
-harness::Box2DRequest decodeRunBox2DRequest(const json& j) {
-  return decodeBody<harness::Box2DRequest>("Box2DRequest", j);
-}
-harness::SceneRequest decodeRunSceneRequest(const json& j) {
-  return decodeBody<harness::SceneRequest>("SceneRequest", j);
+json encodeRequest(const harness::Request& request) {
+  return std::visit(
+      [](const auto& r) -> json {
+        return {{"kind", r.kKind}, {"body", encodeValue(r)}};
+      },
+      request);
 }
 
-// Results ----------------------------------------------------------------------------------------
+harness::Request decodeRequest(const json& message) {
+  return decodeKind(getString(message, "kind"), field(message, "body"), kKinds);
+}
 
-json encodeResult(const harness::SpringForceResult& r) { return encodeOutcomeAnd(r); }
-json encodeResult(const harness::ForcesResult& r) { return encodeOutcomeAnd(r); }
-json encodeResult(const harness::SimulateResult& r) { return encodeOutcomeAnd(r); }
-json encodeResult(const harness::ClothResult& r) { return encodeOutcomeAnd(r); }
-json encodeResult(const harness::ParticlesResult& r) { return encodeOutcomeAnd(r); }
-json encodeResult(const harness::Box2DResult& r) { return encodeOutcomeAnd(r); }
-json encodeResult(const harness::SceneResult& r) { return encodeOutcomeAnd(r); }
+json encodeAnswer(const harness::Answer& answer) {
+  return std::visit([](const auto& a) { return encodeOutcomeAnd(a); }, answer);
+}
 
-harness::SpringForceResult decodeSpringForce(const json& j) {
-  return decodeResult<harness::SpringForceResult>("SpringForceResult", j);
-}
-harness::ForcesResult decodeForces(const json& j) {
-  return decodeResult<harness::ForcesResult>("ForcesResult", j);
-}
-harness::SimulateResult decodeSimulate(const json& j) {
-  return decodeResult<harness::SimulateResult>("SimulateResult", j);
-}
-harness::ClothResult decodeBuildCloth(const json& j) {
-  return decodeResult<harness::ClothResult>("ClothResult", j);
-}
-harness::ParticlesResult decodeParticles(const json& j) {
-  return decodeResult<harness::ParticlesResult>("ParticlesResult", j);
-}
-harness::Box2DResult decodeRunBox2D(const json& j) {
-  return decodeResult<harness::Box2DResult>("Box2DResult", j);
-}
-harness::SceneResult decodeRunScene(const json& j) {
-  return decodeResult<harness::SceneResult>("SceneResult", j);
+harness::Answer decodeAnswer(std::size_t kind, const json& j) {
+  return decodeAnswerAt(kind, j, kKinds);
 }
 
 // Serving
 // ------------------------------------------------------------------------------------------
 
 json serve(harness::StudentCode& code, const json& message) {
-  std::string kind;
   try {
-    kind = getString(message, "kind");
-    const json& body = field(message, "body");
-    if (kind == "springForce")
-      return encodeResult(code.springForce(decodeSpringForceRequest(body)));
-    if (kind == "forces") return encodeResult(code.forces(decodeForcesRequest(body)));
-    if (kind == "simulate") return encodeResult(code.simulate(decodeSimulateRequest(body)));
-    if (kind == "buildCloth") return encodeResult(code.buildCloth(decodeBuildClothRequest(body)));
-    if (kind == "emit") return encodeResult(code.emit(decodeEmitRequest(body)));
-    if (kind == "runParticles") {
-      return encodeResult(code.runParticles(decodeRunParticlesRequest(body)));
-    }
-    if (kind == "runBox2D") return encodeResult(code.runBox2D(decodeRunBox2DRequest(body)));
-    if (kind == "runScene") return encodeResult(code.runScene(decodeRunSceneRequest(body)));
-    return {{"error", "the probe does not know the request kind '" + kind + "'"},
-            {"fault", "refused"}};
+    return encodeAnswer(code.ask(decodeRequest(message)));
   } catch (const Malformed& e) {
-    return {
-        {"error", "malformed request" + (kind.empty() ? "" : " '" + kind + "'") + ": " + e.what()},
-        {"fault", "refused"}};
+    return {{"error", std::string("malformed request: ") + e.what()}, {"fault", "refused"}};
   } catch (const std::exception& e) {
     return {{"error", std::string("exception: ") + e.what()}, {"fault", "exception"}};
   } catch (...) {

@@ -36,53 +36,34 @@ struct Malformed : std::runtime_error {
 nlohmann::json encodeDouble(double x);
 double decodeDouble(const nlohmann::json& j);  ///< throws Malformed
 
-// Requests: {"kind": "springForce" | "forces" | "simulate" | "buildCloth" | "emit" |
-// "runParticles" | "runBox2D" | "runScene", "body": {...}}
-// -----------------------------------------
-nlohmann::json encodeSpringForce(const harness::SpringForceRequest&);
-nlohmann::json encodeForces(const harness::ForcesRequest&);
-nlohmann::json encodeSimulate(const harness::SimulateRequest&);
-nlohmann::json encodeBuildCloth(const ClothSpec&);
-nlohmann::json encodeEmit(const harness::EmitRequest&);
-nlohmann::json encodeRunParticles(const harness::ParticleRunRequest&);
-nlohmann::json encodeRunBox2D(const harness::Box2DRequest&);
-nlohmann::json encodeRunScene(const harness::SceneRequest&);
+// Requests: {"kind": the request kind's kKind ("springForce", "simulate", ...), "body": {its
+// fields}}. Answers: an object with "error" (empty when the code ran to the end), "fault" and the
+// fields of the request's Result.
+nlohmann::json encodeRequest(const harness::Request&);
+/// A whole request message back; throws Malformed (an unknown kind, a malformed body).
+harness::Request decodeRequest(const nlohmann::json& message);
 
-/// Request bodies back (the "body" member of an encoded request); throw Malformed.
-harness::SpringForceRequest decodeSpringForceRequest(const nlohmann::json& body);
-harness::ForcesRequest decodeForcesRequest(const nlohmann::json& body);
-harness::SimulateRequest decodeSimulateRequest(const nlohmann::json& body);
-ClothSpec decodeBuildClothRequest(const nlohmann::json& body);
-harness::EmitRequest decodeEmitRequest(const nlohmann::json& body);
-harness::ParticleRunRequest decodeRunParticlesRequest(const nlohmann::json& body);
-harness::Box2DRequest decodeRunBox2DRequest(const nlohmann::json& body);
-harness::SceneRequest decodeRunSceneRequest(const nlohmann::json& body);
+nlohmann::json encodeAnswer(const harness::Answer&);
+/// The answer to a request of index `kind` in harness::Request; throws Malformed with a clear
+/// message on malformed input (the ProbeClient turns that into the answer's error: "garbage
+/// from the probe: ..."). An answer whose error is non-empty may carry nothing else.
+harness::Answer decodeAnswer(std::size_t kind, const nlohmann::json&);
+
+/// The typed forms, for a request kind R.
+template <class R>
+nlohmann::json encodeResult(const typename R::Result& result) {
+  return encodeAnswer(harness::answerTo<R>(result));
+}
+template <class R>
+typename R::Result decodeResult(const nlohmann::json& j) {
+  return std::get<harness::kKindOf<R>>(decodeAnswer(harness::kKindOf<R>, j));
+}
 
 /// Answers one encoded request with `code` (the probe calls this with the in-process
-/// implementation); returns the encoded result. Never throws: a malformed request, an unknown
-/// kind or an exception escaping `code` gives a result whose error says so ({"error": "..."}
+/// implementation); returns the encoded answer. Never throws: a malformed request, an unknown
+/// kind or an exception escaping `code` gives an answer whose error says so ({"error": "..."}
 /// alone when there is nothing else to say).
 nlohmann::json serve(harness::StudentCode& code, const nlohmann::json& request);
-
-// Results: an object with "error" (a string, empty when the code ran to the end) and the fields.
-nlohmann::json encodeResult(const harness::SpringForceResult&);
-nlohmann::json encodeResult(const harness::ForcesResult&);
-nlohmann::json encodeResult(const harness::SimulateResult&);
-nlohmann::json encodeResult(const harness::ClothResult&);
-nlohmann::json encodeResult(const harness::ParticlesResult&);
-nlohmann::json encodeResult(const harness::Box2DResult&);
-nlohmann::json encodeResult(const harness::SceneResult&);
-
-/// Decoding results: each throws Malformed (a std::runtime_error) with a clear message on
-/// malformed input (the ProbeClient turns that into the result's error: "garbage from the
-/// probe: ..."). A result whose error is non-empty may carry nothing else.
-harness::SpringForceResult decodeSpringForce(const nlohmann::json&);
-harness::ForcesResult decodeForces(const nlohmann::json&);
-harness::SimulateResult decodeSimulate(const nlohmann::json&);
-harness::ClothResult decodeBuildCloth(const nlohmann::json&);
-harness::ParticlesResult decodeParticles(const nlohmann::json&);
-harness::Box2DResult decodeRunBox2D(const nlohmann::json&);
-harness::SceneResult decodeRunScene(const nlohmann::json&);
 
 // Framing -----------------------------------------------------------------------------------------
 /// The largest message either side accepts, bytes (a longer announced length is garbage).

@@ -155,6 +155,10 @@ void fields(V& v, harness::SimulateRequest& r) {
   v("referenceForces", r.referenceForces);
 }
 template <class V>
+void fields(V& v, harness::ClothRequest& r) {
+  v("spec", r.spec);
+}
+template <class V>
 void fields(V& v, harness::EmitRequest& r) {
   v("spec", r.spec), v("seed", r.seed), v("count", r.count);
 }

@@ -74,7 +74,7 @@ std::string startupFailure(const fs::path& probe, const fs::path& runDir,
   harness::SceneRequest ping;
   ping.frames = {-1};
   for (int k = 0; k < 2; ++k) {
-    const harness::SceneResult r = client.runScene(ping);
+    const harness::SceneResult r = client.ask(ping);
     if (r.fault == harness::Fault::Refused) continue;  // main runs, and refused the frame
     if (r.fault == harness::Fault::TimedOut) {
       std::ostringstream out;

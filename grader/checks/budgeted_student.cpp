@@ -100,54 +100,29 @@ void BudgetedStudent::interpret(harness::Outcome& result) {
   }
 }
 
-template <class Result, class Call>
-Result BudgetedStudent::call(Call&& forward) {
-  Result result;
-  if (probe_ == nullptr) {
-    result.fail(harness::Fault::Unavailable, reworded(unavailable_));
-    return result;
-  }
+harness::Answer BudgetedStudent::respond(const harness::Request& request) {
+  auto failed = [&](harness::Fault fault, std::string words) {
+    harness::Outcome why;
+    why.fail(fault, std::move(words));
+    return harness::failedAnswer(request, std::move(why));
+  };
+  if (probe_ == nullptr) return failed(harness::Fault::Unavailable, reworded(unavailable_));
   if (std::string why = refusal(); !why.empty()) {
-    result.fail(harness::Fault::NotRun, reworded(std::move(why)));
-    return result;
+    return failed(harness::Fault::NotRun, reworded(std::move(why)));
   }
   try {
-    result = forward();
-    interpret(result);
-    return result;
+    harness::Answer answer = probe_->ask(request);
+    interpret(harness::outcomeOf(answer));
+    return answer;
   } catch (const std::exception& e) {
-    result.fail(harness::Fault::GraderError,
-                std::string("the grader could not run your code: ") + e.what());
+    machineFault_ = graderFault_ = true;
+    return failed(harness::Fault::GraderError,
+                  std::string("the grader could not run your code: ") + e.what());
   } catch (...) {
-    result.fail(harness::Fault::GraderError, "the grader could not run your code (unknown error)");
+    machineFault_ = graderFault_ = true;
+    return failed(harness::Fault::GraderError,
+                  "the grader could not run your code (unknown error)");
   }
-  machineFault_ = graderFault_ = true;
-  return result;
-}
-
-harness::SpringForceResult BudgetedStudent::springForce(const harness::SpringForceRequest& r) {
-  return call<harness::SpringForceResult>([&] { return probe_->springForce(r); });
-}
-harness::ForcesResult BudgetedStudent::forces(const harness::ForcesRequest& r) {
-  return call<harness::ForcesResult>([&] { return probe_->forces(r); });
-}
-harness::SimulateResult BudgetedStudent::simulate(const harness::SimulateRequest& r) {
-  return call<harness::SimulateResult>([&] { return probe_->simulate(r); });
-}
-harness::ClothResult BudgetedStudent::buildCloth(const ClothSpec& s) {
-  return call<harness::ClothResult>([&] { return probe_->buildCloth(s); });
-}
-harness::ParticlesResult BudgetedStudent::emit(const harness::EmitRequest& r) {
-  return call<harness::ParticlesResult>([&] { return probe_->emit(r); });
-}
-harness::ParticlesResult BudgetedStudent::runParticles(const harness::ParticleRunRequest& r) {
-  return call<harness::ParticlesResult>([&] { return probe_->runParticles(r); });
-}
-harness::Box2DResult BudgetedStudent::runBox2D(const harness::Box2DRequest& r) {
-  return call<harness::Box2DResult>([&] { return probe_->runBox2D(r); });
-}
-harness::SceneResult BudgetedStudent::runScene(const harness::SceneRequest& r) {
-  return call<harness::SceneResult>([&] { return probe_->runScene(r); });
 }
 
 }  // namespace a6::grader

@@ -61,18 +61,9 @@ class BudgetedStudent final : public harness::StudentCode {
   /// The time left of the budget of all checks, s.
   double budgetLeft() const;
 
-  harness::SpringForceResult springForce(const harness::SpringForceRequest& r) override;
-  harness::ForcesResult forces(const harness::ForcesRequest& r) override;
-  harness::SimulateResult simulate(const harness::SimulateRequest& r) override;
-  harness::ClothResult buildCloth(const ClothSpec& s) override;
-  harness::ParticlesResult emit(const harness::EmitRequest& r) override;
-  harness::ParticlesResult runParticles(const harness::ParticleRunRequest& r) override;
-  harness::Box2DResult runBox2D(const harness::Box2DRequest& r) override;
-  harness::SceneResult runScene(const harness::SceneRequest& r) override;
-
  private:
-  template <class Result, class Call>
-  Result call(Call&& forward);
+  /// The probe's answer, within the check's time and the budget; or why it was not asked.
+  harness::Answer respond(const harness::Request& request) override;
   // Why a request is not sent at all (the budget or the check's time spent), or "".
   std::string refusal();
   // The probe's answer, with a used-up check's starts said in the check's terms.

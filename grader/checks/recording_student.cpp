@@ -3,17 +3,6 @@
 #include <gtest/gtest.h>
 
 namespace a6::grader {
-namespace {
-
-// Keeps a copy of the exchange when a public check asked and the student's code ran to the end.
-template <class Request, class Result>
-Result keep(std::vector<Exchange<Request, Result>>& into, const Request& request, Result result) {
-  std::string check = publicCheckRunning();
-  if (!check.empty() && result.ok()) into.push_back({std::move(check), request, result});
-  return result;
-}
-
-}  // namespace
 
 std::string publicCheckRunning() {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -24,26 +13,13 @@ std::string publicCheckRunning() {
   return suite + "." + info->name();
 }
 
-harness::SpringForceResult RecordingStudent::springForce(const harness::SpringForceRequest& r) {
-  return keep(transcript_.springs, r, inner_.springForce(r));
-}
-harness::ForcesResult RecordingStudent::forces(const harness::ForcesRequest& r) {
-  return keep(transcript_.forces, r, inner_.forces(r));
-}
-harness::SimulateResult RecordingStudent::simulate(const harness::SimulateRequest& r) {
-  return keep(transcript_.simulations, r, inner_.simulate(r));
-}
-harness::ClothResult RecordingStudent::buildCloth(const ClothSpec& s) {
-  return keep(transcript_.cloths, s, inner_.buildCloth(s));
-}
-harness::ParticlesResult RecordingStudent::emit(const harness::EmitRequest& r) {
-  return keep(transcript_.emissions, r, inner_.emit(r));
-}
-harness::ParticlesResult RecordingStudent::runParticles(const harness::ParticleRunRequest& r) {
-  return keep(transcript_.particleRuns, r, inner_.runParticles(r));
-}
-harness::Box2DResult RecordingStudent::runBox2D(const harness::Box2DRequest& r) {
-  return keep(transcript_.box2d, r, inner_.runBox2D(r));
+harness::Answer RecordingStudent::respond(const harness::Request& request) {
+  harness::Answer answer = inner_.ask(request);
+  std::string check = publicCheckRunning();
+  if (!check.empty() && harness::outcomeOf(answer).ok()) {
+    transcript_.exchanges.push_back({std::move(check), request, answer});
+  }
+  return answer;
 }
 
 }  // namespace a6::grader

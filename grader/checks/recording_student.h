@@ -4,6 +4,9 @@
 // requests to; gives its answers unchanged, and the transcript.
 #pragma once
 
+#include <string>
+#include <utility>
+
 #include "checks/transcript.h"
 #include "harness/student_code.h"
 
@@ -17,18 +20,10 @@ class RecordingStudent final : public harness::StudentCode {
   const Transcript& transcript() const { return transcript_; }
   Transcript takeTranscript() { return std::move(transcript_); }
 
-  harness::SpringForceResult springForce(const harness::SpringForceRequest& r) override;
-  harness::ForcesResult forces(const harness::ForcesRequest& r) override;
-  harness::SimulateResult simulate(const harness::SimulateRequest& r) override;
-  harness::ClothResult buildCloth(const ClothSpec& s) override;
-  harness::ParticlesResult emit(const harness::EmitRequest& r) override;
-  harness::ParticlesResult runParticles(const harness::ParticleRunRequest& r) override;
-  harness::Box2DResult runBox2D(const harness::Box2DRequest& r) override;
-  harness::SceneResult runScene(const harness::SceneRequest& r) override {
-    return inner_.runScene(r);
-  }
-
  private:
+  /// The inner code's answer; kept when a public check asked and the code ran to the end.
+  harness::Answer respond(const harness::Request& request) override;
+
   harness::StudentCode& inner_;
   Transcript transcript_;
 };

@@ -24,7 +24,7 @@ harness::SceneResult runInParts(harness::StudentCode& student, const std::string
     const std::size_t to = std::min(frames.size(), from + kFramesPerRequest);
     request.frames.assign(frames.begin() + static_cast<std::ptrdiff_t>(from),
                           frames.begin() + static_cast<std::ptrdiff_t>(to));
-    harness::SceneResult part = student.runScene(request);
+    harness::SceneResult part = student.ask(request);
     if (!part.ok() || part.snapshots.size() != request.frames.size()) {
       if (part.ok()) part.fail(harness::Fault::Garbage, "the replay's answer lacks frames");
       return part;
@@ -53,7 +53,7 @@ std::vector<int> sampleSteps(int steps) {
 // to draw.
 const harness::ParticleRunRequest* replayableRun(const Transcript& t, const std::string& check) {
   const harness::ParticleRunRequest* longest = nullptr;
-  for (const auto& x : t.particleRuns) {
+  for (const auto& x : t.of<harness::ParticleRunRequest>()) {
     const harness::ParticleRunRequest& r = x.request;
     if (x.check == check && r.emitter.rate == 0 && r.referenceForces && !r.initial.empty() &&
         r.initial.size() <= kParticlesPerTrajectory && r.steps >= 1 && r.steps <= 100000 &&
@@ -78,7 +78,7 @@ std::vector<ParticleTrajectory> runParticleTrajectories(BudgetedStudent& student
     for (int steps : t.steps) {
       harness::ParticleRunRequest r = *request;
       r.steps = steps;
-      harness::ParticlesResult result = student.runParticles(r);
+      harness::ParticlesResult result = student.ask(r);
       if (!result.ok()) break;
       t.runs.push_back(std::move(result));
     }

@@ -14,13 +14,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
-#include <functional>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
 #include <thread>
+#include <type_traits>
 #include <utility>
+#include <variant>
 
 #include "harness/force_channel.h"
 #include "harness/wire.h"
@@ -510,7 +511,7 @@ struct ProbeClient::Impl {
     harness::SceneRequest ping;
     ping.frames = {-1};
     std::string body;
-    if (Outcome failed = exchange(wire::frame(wire::encodeRunScene(ping)), deadline, body);
+    if (Outcome failed = exchange(wire::frame(wire::encodeRequest(ping)), deadline, body);
         !failed.ok()) {
       return failed;
     }
@@ -547,17 +548,15 @@ struct ProbeClient::Impl {
     return {after(Clock::now(), timeout), timeout, &forceAnswers, forceAnswers.load()};
   }
 
-  template <typename Result>
-  Result call(const std::function<json()>& encode, Result (*decode)(const json&)) {
+  harness::Answer call(const harness::Request& request) {
     std::lock_guard<std::mutex> lock(mutex);
-    Result failed;
     std::string bytes;
     try {
-      bytes = wire::frame(encode());
+      bytes = wire::frame(wire::encodeRequest(request));
     } catch (const std::exception& e) {
-      failed.fail(Fault::GraderError,
-                  reworded(std::string("the grader could not encode the request: ") + e.what()));
-      return failed;
+      return harness::failedAnswer(
+          request, failure(Fault::GraderError,
+                           std::string("the grader could not encode the request: ") + e.what()));
     }
     checkQuiet();
     const Deadline deadline = requestDeadline();
@@ -568,18 +567,16 @@ struct ProbeClient::Impl {
     }
     std::string body;
     if (why.ok()) why = exchange(bytes, deadline, body);
-    if (!why.ok()) {
-      static_cast<Outcome&>(failed) = why;
-      return failed;
-    }
+    if (!why.ok()) return harness::failedAnswer(request, std::move(why));
     try {
-      Result answer = decode(parseAnswer(body));
-      if (!answer.error.empty()) answer.error = reworded(std::move(answer.error));
+      harness::Answer answer = wire::decodeAnswer(request.index(), parseAnswer(body));
+      Outcome& outcome = harness::outcomeOf(answer);
+      if (!outcome.error.empty()) outcome.error = reworded(std::move(outcome.error));
       return answer;
     } catch (const std::exception& e) {
       shutdown("sent garbage");
-      failed.fail(Fault::Garbage, reworded(std::string("garbage from the probe: ") + e.what()));
-      return failed;
+      return harness::failedAnswer(
+          request, failure(Fault::Garbage, std::string("garbage from the probe: ") + e.what()));
     }
   }
 };
@@ -633,37 +630,8 @@ void ProbeClient::setMaxStarts(int starts) {
   impl_->maxStarts = starts;
 }
 
-harness::SpringForceResult ProbeClient::springForce(const harness::SpringForceRequest& r) {
-  return impl_->call<harness::SpringForceResult>([&] { return wire::encodeSpringForce(r); },
-                                                 wire::decodeSpringForce);
-}
-harness::ForcesResult ProbeClient::forces(const harness::ForcesRequest& r) {
-  return impl_->call<harness::ForcesResult>([&] { return wire::encodeForces(r); },
-                                            wire::decodeForces);
-}
-harness::SimulateResult ProbeClient::simulate(const harness::SimulateRequest& r) {
-  return impl_->call<harness::SimulateResult>([&] { return wire::encodeSimulate(r); },
-                                              wire::decodeSimulate);
-}
-harness::ClothResult ProbeClient::buildCloth(const ClothSpec& s) {
-  return impl_->call<harness::ClothResult>([&] { return wire::encodeBuildCloth(s); },
-                                           wire::decodeBuildCloth);
-}
-harness::ParticlesResult ProbeClient::emit(const harness::EmitRequest& r) {
-  return impl_->call<harness::ParticlesResult>([&] { return wire::encodeEmit(r); },
-                                               wire::decodeParticles);
-}
-harness::ParticlesResult ProbeClient::runParticles(const harness::ParticleRunRequest& r) {
-  return impl_->call<harness::ParticlesResult>([&] { return wire::encodeRunParticles(r); },
-                                               wire::decodeParticles);
-}
-harness::Box2DResult ProbeClient::runBox2D(const harness::Box2DRequest& r) {
-  return impl_->call<harness::Box2DResult>([&] { return wire::encodeRunBox2D(r); },
-                                           wire::decodeRunBox2D);
-}
-harness::SceneResult ProbeClient::runScene(const harness::SceneRequest& r) {
-  return impl_->call<harness::SceneResult>([&] { return wire::encodeRunScene(r); },
-                                           wire::decodeRunScene);
+harness::Answer ProbeClient::respond(const harness::Request& request) {
+  return impl_->call(request);
 }
 
 std::string ProbeClient::output() const {
@@ -714,25 +682,28 @@ void ProbePair::allowMoreStarts(int more) {
   models_->setMaxStarts(models_->starts() + more);
 }
 
-harness::SpringForceResult ProbePair::springForce(const harness::SpringForceRequest& r) {
-  return plain_->springForce(r);
+namespace {
+// Whether a request asks for the reference forces (a field referenceForces, set).
+template <class R, class = void>
+struct HasReferenceForces : std::false_type {};
+template <class R>
+struct HasReferenceForces<R, std::void_t<decltype(R::referenceForces)>> : std::true_type {};
+
+bool asksForReferenceForces(const harness::Request& request) {
+  return std::visit(
+      [](const auto& r) {
+        if constexpr (HasReferenceForces<std::decay_t<decltype(r)>>::value) {
+          return r.referenceForces;
+        } else {
+          return false;
+        }
+      },
+      request);
 }
-harness::ForcesResult ProbePair::forces(const harness::ForcesRequest& r) {
-  return plain_->forces(r);
-}
-harness::SimulateResult ProbePair::simulate(const harness::SimulateRequest& r) {
-  return r.referenceForces ? models_->simulate(r) : plain_->simulate(r);
-}
-harness::ClothResult ProbePair::buildCloth(const ClothSpec& s) { return plain_->buildCloth(s); }
-harness::ParticlesResult ProbePair::emit(const harness::EmitRequest& r) { return plain_->emit(r); }
-harness::ParticlesResult ProbePair::runParticles(const harness::ParticleRunRequest& r) {
-  return r.referenceForces ? models_->runParticles(r) : plain_->runParticles(r);
-}
-harness::Box2DResult ProbePair::runBox2D(const harness::Box2DRequest& r) {
-  return plain_->runBox2D(r);
-}
-harness::SceneResult ProbePair::runScene(const harness::SceneRequest& r) {
-  return plain_->runScene(r);
+}  // namespace
+
+harness::Answer ProbePair::respond(const harness::Request& request) {
+  return asksForReferenceForces(request) ? models_->ask(request) : plain_->ask(request);
 }
 
 std::string ProbePair::output(std::size_t cap) const {

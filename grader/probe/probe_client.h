@@ -84,15 +84,6 @@ class ProbeClient final : public harness::StudentCode {
   /// side should use a uid each: RLIMIT_NPROC and file access are per user.
   void setUser(uid_t uid, gid_t gid);
 
-  harness::SpringForceResult springForce(const harness::SpringForceRequest&) override;
-  harness::ForcesResult forces(const harness::ForcesRequest&) override;
-  harness::SimulateResult simulate(const harness::SimulateRequest&) override;
-  harness::ClothResult buildCloth(const ClothSpec&) override;
-  harness::ParticlesResult emit(const harness::EmitRequest&) override;
-  harness::ParticlesResult runParticles(const harness::ParticleRunRequest&) override;
-  harness::Box2DResult runBox2D(const harness::Box2DRequest&) override;
-  harness::SceneResult runScene(const harness::SceneRequest&) override;
-
   /// Everything the probes printed so far, capped at Limits::outputBytes over all of them, plus
   /// a marker line where one ended ("[a6: probe 2 crashed: killed by SIGSEGV ...]"), for the
   /// report; never parsed.
@@ -106,6 +97,8 @@ class ProbeClient final : public harness::StudentCode {
   void stop();
 
  private:
+  harness::Answer respond(const harness::Request& request) override;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
@@ -125,15 +118,6 @@ class ProbePair final : public harness::StudentCode {
   /// Each probe may be started `more` more times from now on (a new check's restarts).
   void allowMoreStarts(int more);
 
-  harness::SpringForceResult springForce(const harness::SpringForceRequest&) override;
-  harness::ForcesResult forces(const harness::ForcesRequest&) override;
-  harness::SimulateResult simulate(const harness::SimulateRequest&) override;
-  harness::ClothResult buildCloth(const ClothSpec&) override;
-  harness::ParticlesResult emit(const harness::EmitRequest&) override;
-  harness::ParticlesResult runParticles(const harness::ParticleRunRequest&) override;
-  harness::Box2DResult runBox2D(const harness::Box2DRequest&) override;
-  harness::SceneResult runScene(const harness::SceneRequest&) override;
-
   /// How many forces the grader has answered the probe with the reference forces so far.
   std::size_t forceAnswers() const;
   /// What both printed (the plain probe's first), capped at `cap` bytes.
@@ -146,6 +130,9 @@ class ProbePair final : public harness::StudentCode {
   std::vector<std::string> notes() const;
 
  private:
+  /// The probe with the reference forces answers what asks for them; the other, the rest.
+  harness::Answer respond(const harness::Request& request) override;
+
   std::unique_ptr<ProbeClient> plain_, models_;
 };
 

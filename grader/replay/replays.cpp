@@ -252,7 +252,7 @@ std::optional<ReplayView> trajectoryView(const std::string& check, int task,
 
 // The first exchange of `check` the reference can answer and the student's run differs from.
 std::optional<ReplayView> trajectoryOf(const Transcript& t, const std::string& check) {
-  for (const auto& x : t.simulations) {
+  for (const auto& x : t.of<harness::SimulateRequest>()) {
     if (x.check != check || x.request.particles.size() > kTrajectoryParticles) continue;
     const std::optional<harness::SimulateResult> ref = referenceSimulation(x.request);
     if (!ref || ref->states.size() != x.result.states.size() ||

@@ -5,7 +5,7 @@
 // registerGoldenChecks from golden_checks.h).
 //
 // Each image is one test, GoldenTask<task>.<name> (e.g. GoldenTask4.cloth_shear_f120), so the
-// task is in the name. The scene runs through the harness (StudentCode::runScene, the request
+// task is in the name. The scene runs through the harness (a SceneRequest, the request
 // the grader's probe serves); the snapshot is rendered and compared in this process. A failure
 // names the tasks the scene runs, gives a hint, and writes actual / expected / difference PNGs.
 //
@@ -90,7 +90,7 @@ class Scenes {
       harness::SceneRequest request;
       request.scene = scene;
       request.frames = frames_[scene];
-      it = runs_.emplace(scene, student().runScene(request)).first;
+      it = runs_.emplace(scene, student().ask(request)).first;
     }
     const harness::SceneResult& run = it->second;
     if (!run.ok()) {
@@ -367,7 +367,7 @@ Image renderFresh(const std::string& scene, int frame, std::string* error) {
   harness::SceneRequest request;
   request.scene = scene;
   request.frames = {frame};
-  const harness::SceneResult run = student().runScene(request);
+  const harness::SceneResult run = student().ask(request);
   if (!run.ok()) {
     *error = run.error;
     return Image();

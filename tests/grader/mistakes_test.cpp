@@ -14,7 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using a6::Vec2;
-using a6::grader::Exchange;
 using a6::grader::Likeness;
 using a6::grader::mistakeLibrary;
 using a6::grader::MistakeModel;
@@ -32,8 +31,16 @@ std::string expectOf(const std::string& id) {
   return text.str();
 }
 
+// One exchange of a spring force, to add to a transcript.
+struct SpringExchange {
+  std::string check;
+  SpringForceRequest request;
+  SpringForceResult result;
+};
+void add(Transcript& t, const SpringExchange& x) { t.add(x.check, x.request, x.result); }
+
 // A spring stretched to 1.5 m (rest 1 m, ks 10 N/m), its ends moving apart sideways and along it.
-Exchange<SpringForceRequest, SpringForceResult> stretched(Vec2 answer) {
+SpringExchange stretched(Vec2 answer) {
   SpringForceRequest r;
   r.p1.x = Vec2(0, 0), r.p2.x = Vec2(1.5, 0);
   r.p1.v = Vec2(0.5, 0.25), r.p2.v = Vec2(1, -0.5);
@@ -82,17 +89,17 @@ TEST(MistakeLibrary, EveryWrongVersionThatNamesAMistakeHasItsModel) {
 TEST(NameMistakes, TheWrongSignIsNamed) {
   // f2 = -ks (l - l0) e - kd ((v2 - v1)·e) e = -5 - 2 (0.5) = -6 along x; the wrong sign: +5 - 1.
   Transcript t;
-  t.springs.push_back(stretched(Vec2(4, 0)));
+  add(t, stretched(Vec2(4, 0)));
   EXPECT_EQ(named(t, {1}), std::set<std::string>{"t1_wrong_sign"});
   EXPECT_EQ(named(t, {2, 3}), std::set<std::string>{}) << "only a failing task's mistakes";
 }
 
 TEST(NameMistakes, TheReferenceIsNeverNamed) {
   Transcript t;
-  t.springs.push_back(stretched(Vec2(-6, 0)));
+  add(t, stretched(Vec2(-6, 0)));
   EXPECT_EQ(named(t, {1, 2, 3, 4, 5, 6}), std::set<std::string>{});
   // Within float rounding of the reference: still nothing.
-  t.springs.push_back(stretched(Vec2(-6 * (1 + 1e-7), 1e-9)));
+  add(t, stretched(Vec2(-6 * (1 + 1e-7), 1e-9)));
   EXPECT_EQ(named(t, {1}), std::set<std::string>{});
 }
 
@@ -100,16 +107,16 @@ TEST(NameMistakes, AnAnswerLikeTheReferenceSomewhereVetoesTheMistake) {
   // The full relative velocity damps the sideways motion too: (-6, 1.5). Once like it, once like
   // the reference: not named.
   Transcript t;
-  t.springs.push_back(stretched(Vec2(-6, 1.5)));
+  add(t, stretched(Vec2(-6, 1.5)));
   EXPECT_EQ(named(t, {1}), std::set<std::string>{"t1_damping_full_relative_velocity"});
-  t.springs.push_back(stretched(Vec2(-6, 0)));
+  add(t, stretched(Vec2(-6, 0)));
   EXPECT_EQ(named(t, {1}), std::set<std::string>{});
 }
 
 // The same spring with p1 still and p2 moving along it at 1 m/s: u·e = 1, so each damping form
 // differs from the others.
-Exchange<SpringForceRequest, SpringForceResult> moving(Vec2 answer) {
-  Exchange<SpringForceRequest, SpringForceResult> x = stretched(answer);
+SpringExchange moving(Vec2 answer) {
+  SpringExchange x = stretched(answer);
   x.request.p1.v = Vec2(0, 0), x.request.p2.v = Vec2(1, 0);
   return x;
 }
@@ -117,8 +124,8 @@ Exchange<SpringForceRequest, SpringForceResult> moving(Vec2 answer) {
 TEST(NameMistakes, TheWrongPartIsNamedWhenTheAnswersSingleItOut) {
   // Damping with the wrong sign: -5 + 2 (0.5) = -4 on the first spring, -5 + 2 = -3 on the second.
   Transcript t;
-  t.springs.push_back(stretched(Vec2(-4, 0)));
-  t.springs.push_back(moving(Vec2(-3, 0)));
+  add(t, stretched(Vec2(-4, 0)));
+  add(t, moving(Vec2(-3, 0)));
   const auto found = nameMistakes(t, mistakeLibrary(), {1});
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].id, "t1_damping_sign");
@@ -130,25 +137,25 @@ TEST(NameMistakes, TheWrongPartIsNamedWhenTheAnswersSingleItOut) {
 TEST(NameMistakes, AnswersThatFitTwoExplanationsNameNothing) {
   // Ends at rest: every damping form is zero, so +ks (l - l0) e fits the wrong elastic sign with
   // any of them. Nothing singles one out: nothing is named.
-  Exchange<SpringForceRequest, SpringForceResult> x = stretched(Vec2(5, 0));
+  SpringExchange x = stretched(Vec2(5, 0));
   x.request.p1.v = x.request.p2.v = Vec2(0, 0);
   Transcript t;
-  t.springs.push_back(x);
+  add(t, x);
   EXPECT_EQ(named(t, {1}), std::set<std::string>{});
   // An answer no form of the parts gives: nothing either.
-  t.springs.push_back(stretched(Vec2(123, 4)));
+  add(t, stretched(Vec2(123, 4)));
   EXPECT_EQ(named(t, {1}), std::set<std::string>{});
 }
 
 TEST(NameMistakes, AJacobianBlockIsNamedByItsPart) {
   // The spring along x, stretched to 1.5 m (l0 1, ks 10, kd 2): dfdx = -10 diag(1, 1/3), dfdv =
   // -2 diag(1, 0). dfdv with the outer product left out: -2 I; dfdx right.
-  Exchange<SpringForceRequest, SpringForceResult> x = stretched(Vec2(0, 0));
+  SpringExchange x = stretched(Vec2(0, 0));
   x.request.jacobians = true;
   x.result.dfdx << -10, 0, 0, -10.0 / 3;
   x.result.dfdv << -2, 0, 0, -2;
   Transcript t;
-  t.springs.push_back(x);
+  add(t, x);
   EXPECT_EQ(named(t, {7}), std::set<std::string>{"t7_dfdv_no_outer_product"});
   EXPECT_EQ(named(t, {1}), std::set<std::string>{}) << "a Jacobian request tells task 1 nothing";
 }
@@ -156,22 +163,22 @@ TEST(NameMistakes, AJacobianBlockIsNamedByItsPart) {
 TEST(NameMistakes, AStubIsNamedNothing) {
   // Zero Jacobians for a spring at its rest length with kd = 0 are what dfdx_isotropic with dfdv
   // missing gives there: a stub's zeros never name a mistake.
-  Exchange<SpringForceRequest, SpringForceResult> x = stretched(Vec2(0, 0));
+  SpringExchange x = stretched(Vec2(0, 0));
   x.request.p2.x = Vec2(1, 0);
   x.request.kd = 0;
   x.request.jacobians = true;
   Transcript t;
-  t.springs.push_back(x);
+  add(t, x);
   EXPECT_EQ(named(t, {7}), std::set<std::string>{});
-  t.springs.push_back(stretched(Vec2(0, 0)));  // the force of a stub computeForce
+  add(t, stretched(Vec2(0, 0)));  // the force of a stub computeForce
   EXPECT_EQ(named(t, {1, 7}), std::set<std::string>{});
 }
 
 TEST(NameMistakes, NaNIsLikeTheMissingGuard) {
-  Exchange<SpringForceRequest, SpringForceResult> x = stretched(Vec2(NAN, NAN));
+  SpringExchange x = stretched(Vec2(NAN, NAN));
   x.request.p2.x = x.request.p1.x;
   Transcript t;
-  t.springs.push_back(x);
+  add(t, x);
   EXPECT_EQ(named(t, {1}), std::set<std::string>{"t1_nan_for_coincident_particles"});
 }
 

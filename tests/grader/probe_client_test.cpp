@@ -78,11 +78,13 @@ TEST(ProbeClient, TheSolutionsProbeAnswersBitForBitAsInProcess) {
   probe.serveForces(referenceForceModel());  // asked for over the force pipes
   auto local = harness::makeInProcess(referenceForceModel());
   auto same = [](const auto& viaProbe, const auto& inProcess, const char* what) {
-    EXPECT_TRUE(viaProbe.ok()) << what << ": " << viaProbe.error;
-    EXPECT_EQ(wire::dump(wire::encodeResult(viaProbe)), wire::dump(wire::encodeResult(inProcess)))
+    const harness::Outcome& outcome = harness::outcomeOf(viaProbe);
+    EXPECT_TRUE(outcome.ok()) << what << ": " << outcome.error;
+    EXPECT_EQ(wire::dump(wire::encodeAnswer(viaProbe)), wire::dump(wire::encodeAnswer(inProcess)))
         << what;
   };
-  same(probe.springForce(spring(50)), local->springForce(spring(50)), "springForce");
+  same(probe.ask(harness::Request(spring(50))), local->ask(harness::Request(spring(50))),
+       "springForce");
 
   harness::ForcesRequest forces;
   forces.particle.v = Vec2(0.5, -2);
@@ -92,7 +94,7 @@ TEST(ProbeClient, TheSolutionsProbeAnswersBitForBitAsInProcess) {
   forces.env.repulsion = 1000;
   forces.env.planes.push_back(HalfPlane{});
   forces.contact.depth = 0.01;
-  same(probe.forces(forces), local->forces(forces), "forces");
+  same(probe.ask(harness::Request(forces)), local->ask(harness::Request(forces)), "forces");
 
   harness::SimulateRequest sim;
   sim.particles.resize(3);
@@ -105,24 +107,25 @@ TEST(ProbeClient, TheSolutionsProbeAnswersBitForBitAsInProcess) {
   sim.substeps = 4;
   sim.recordEvery = 7;
   sim.referenceForces = true;
-  same(probe.simulate(sim), local->simulate(sim), "simulate");
+  same(probe.ask(harness::Request(sim)), local->ask(harness::Request(sim)), "simulate");
 
   ClothSpec cloth;
   cloth.n = 6;
   cloth.bending = true;
-  same(probe.buildCloth(cloth), local->buildCloth(cloth), "buildCloth");
+  same(probe.ask(harness::Request(harness::ClothRequest{cloth})),
+       local->ask(harness::Request(harness::ClothRequest{cloth})), "buildCloth");
 
   harness::EmitRequest emit;
   emit.seed = 77;
   emit.count = 500;
-  same(probe.emit(emit), local->emit(emit), "emit");
+  same(probe.ask(harness::Request(emit)), local->ask(harness::Request(emit)), "emit");
 
   harness::ParticleRunRequest run;
   run.seed = 5;
   run.steps = 90;
   run.dt = 1.0 / 64;
   run.referenceForces = true;
-  same(probe.runParticles(run), local->runParticles(run), "runParticles");
+  same(probe.ask(harness::Request(run)), local->ask(harness::Request(run)), "runParticles");
 
   harness::Box2DRequest box;
   box.scene = "mouse_drag";
@@ -130,19 +133,19 @@ TEST(ProbeClient, TheSolutionsProbeAnswersBitForBitAsInProcess) {
   box.drag = {{harness::DragEvent::Kind::Begin, 5, Vec2(0.5, 1)},
               {harness::DragEvent::Kind::Move, 20, Vec2(1, 2)},
               {harness::DragEvent::Kind::End, 40, Vec2(1, 2)}};
-  same(probe.runBox2D(box), local->runBox2D(box), "runBox2D");
+  same(probe.ask(harness::Request(box)), local->ask(harness::Request(box)), "runBox2D");
   box.scene = "car";
   box.drag.clear();
-  same(probe.runBox2D(box), local->runBox2D(box), "runBox2D car");
+  same(probe.ask(harness::Request(box)), local->ask(harness::Request(box)), "runBox2D car");
 
   harness::SceneRequest scene;
   scene.scene = "cloth_shear";
   scene.frames = {0, 30, 10};
-  same(probe.runScene(scene), local->runScene(scene), "runScene cloth");
+  same(probe.ask(harness::Request(scene)), local->ask(harness::Request(scene)), "runScene cloth");
   scene.scene = "bridge";
-  same(probe.runScene(scene), local->runScene(scene), "runScene bridge");
+  same(probe.ask(harness::Request(scene)), local->ask(harness::Request(scene)), "runScene bridge");
   scene.scene = "fire";
-  same(probe.runScene(scene), local->runScene(scene), "runScene fire");
+  same(probe.ask(harness::Request(scene)), local->ask(harness::Request(scene)), "runScene fire");
 
   EXPECT_EQ(probe.starts(), 1) << "one probe served every request";
 }
@@ -160,14 +163,14 @@ TEST(ProbeClient, ForcesTheGraderAnswersAddToTheTimeLimitUpToACap) {
   probe.setUser(a6::test::sandboxUid(), 65534);
   probe.serveForces(referenceForceModel());
   harness::SimulateRequest sim;
-  const harness::ClothResult grid = harness::makeInProcess()->buildCloth(ClothSpec{});
+  const harness::ClothResult grid = harness::makeInProcess()->ask(harness::ClothRequest{});
   ASSERT_TRUE(grid.ok()) << grid.error;
   sim.particles = grid.particles;
   sim.springs = grid.springs;
   sim.frames = 60;
   sim.substeps = 4;
   sim.referenceForces = true;
-  ASSERT_TRUE(probe.simulate(sim).ok());
+  ASSERT_TRUE(probe.ask(sim).ok());
   // One batch of springs and one of external forces a step (240 steps).
   EXPECT_EQ(probe.forceAnswers(), 2u * 240u);
 }
@@ -178,26 +181,26 @@ TEST(ProbeClient, PerRequestOverheadIsSmall) {
   probe.setUser(a6::test::sandboxUid(), 65534);
   probe.serveForces(referenceForceModel());  // asked for over the force pipes
   auto local = harness::makeInProcess(referenceForceModel());
-  ASSERT_TRUE(probe.springForce(spring(10)).ok());  // started and warm
+  ASSERT_TRUE(probe.ask(spring(10)).ok());  // started and warm
   constexpr int kRequests = 2000;
   auto t0 = Clock::now();
-  for (int k = 0; k < kRequests; ++k) ASSERT_TRUE(probe.springForce(spring(k)).ok());
+  for (int k = 0; k < kRequests; ++k) ASSERT_TRUE(probe.ask(spring(k)).ok());
   const double viaProbe = since(t0) / kRequests;
   t0 = Clock::now();
-  for (int k = 0; k < kRequests; ++k) ASSERT_TRUE(local->springForce(spring(k)).ok());
+  for (int k = 0; k < kRequests; ++k) ASSERT_TRUE(local->ask(spring(k)).ok());
   const double inProcess = since(t0) / kRequests;
   // A larger request: a 30x30 cloth (961 particles, ~3500 springs) there and back.
   ClothSpec cloth;
   cloth.n = 30;
   t0 = Clock::now();
-  for (int k = 0; k < 20; ++k) ASSERT_TRUE(probe.buildCloth(cloth).ok());
+  for (int k = 0; k < 20; ++k) ASSERT_TRUE(probe.ask(harness::ClothRequest{cloth}).ok());
   const double clothViaProbe = since(t0) / 20;
   t0 = Clock::now();
-  for (int k = 0; k < 20; ++k) ASSERT_TRUE(local->buildCloth(cloth).ok());
+  for (int k = 0; k < 20; ++k) ASSERT_TRUE(local->ask(harness::ClothRequest{cloth}).ok());
   const double clothInProcess = since(t0) / 20;
   // Tasks 3 and 5 ask the grader for every reference force: a 10x10 cloth's second of motion.
   harness::SimulateRequest sim;
-  const harness::ClothResult grid = local->buildCloth(ClothSpec{});
+  const harness::ClothResult grid = local->ask(harness::ClothRequest{});
   ASSERT_TRUE(grid.ok()) << grid.error;
   sim.particles = grid.particles;
   sim.springs = grid.springs;
@@ -206,19 +209,20 @@ TEST(ProbeClient, PerRequestOverheadIsSmall) {
   sim.recordEvery = 60;
   sim.referenceForces = true;
   t0 = Clock::now();
-  const harness::SimulateResult remote = probe.simulate(sim);
+  const harness::SimulateResult remote = probe.ask(sim);
   const double simViaProbe = since(t0);
   ASSERT_TRUE(remote.ok()) << remote.error;
   t0 = Clock::now();
-  const harness::SimulateResult here = local->simulate(sim);
+  const harness::SimulateResult here = local->ask(sim);
   const double simInProcess = since(t0);
-  EXPECT_EQ(wire::dump(wire::encodeResult(remote)), wire::dump(wire::encodeResult(here)));
+  EXPECT_EQ(wire::dump(wire::encodeResult<harness::SimulateRequest>(remote)),
+            wire::dump(wire::encodeResult<harness::SimulateRequest>(here)));
   // A fresh probe: start-up plus the first request.
   TempDir tmp2;
   ProbeClient fresh(kSolution, tmp2.path() / "run", Limits{});
   fresh.setUser(a6::test::sandboxUid(), 65534);
   t0 = Clock::now();
-  ASSERT_TRUE(fresh.springForce(spring(1)).ok());
+  ASSERT_TRUE(fresh.ask(spring(1)).ok());
   const double firstRequest = since(t0);
   std::printf("[ overhead ] springForce: %.1f us via the probe, %.3f us in process\n",
               viaProbe * 1e6, inProcess * 1e6);
@@ -242,7 +246,7 @@ class HostileProbe : public ::testing::Test {
   ProbeClient probe{kHostile, tmp.path() / "run", Limits{}};
   void SetUp() override { probe.setUser(a6::test::sandboxUid(), 65534); }
   void expectHealthy() {
-    const auto r = probe.springForce(spring(10));
+    const auto r = probe.ask(spring(10));
     EXPECT_TRUE(r.ok()) << r.error;
     EXPECT_EQ(r.force, Vec2(-10, 0));
   }
@@ -251,7 +255,7 @@ class HostileProbe : public ::testing::Test {
 TEST_F(HostileProbe, ACrashFailsItsRequestAndTheNextOneGetsAFreshProbe) {
   expectHealthy();
   EXPECT_EQ(probe.starts(), 1);
-  const auto r = probe.springForce(spring(13));
+  const auto r = probe.ask(spring(13));
   EXPECT_EQ(r.error, "the probe crashed: killed by SIGSEGV (segmentation fault)");
   expectHealthy();
   EXPECT_EQ(probe.starts(), 2);
@@ -280,7 +284,7 @@ TEST_F(HostileProbe, AKillFromOutsideIsTheMachinesNotACrash) {
       }
     }
   });
-  const auto r = probe.springForce(spring(14));
+  const auto r = probe.ask(spring(14));
   killer.join();
   EXPECT_EQ(r.fault, harness::Fault::Killed) << r.error;
   EXPECT_EQ(probe.incidents().crashes, 0);
@@ -296,13 +300,13 @@ TEST(ProbeClient, AKillByTheCpuLimitIsTheCodes) {
   ProbeClient probe(kHostile, tmp.path() / "run", limits);
   probe.setUser(a6::test::sandboxUid(), 65534);
   probe.setRequestTimeout(30);
-  const auto r = probe.springForce(spring(25));
+  const auto r = probe.ask(spring(25));
   EXPECT_EQ(r.fault, harness::Fault::Crashed) << r.error;
   EXPECT_TRUE(contains(r.error, "SIGKILL")) << r.error;
 }
 
 TEST_F(HostileProbe, ACrashReportEndsWithTheLastLinesItPrinted) {
-  const auto r = probe.springForce(spring(23));
+  const auto r = probe.ask(spring(23));
   EXPECT_TRUE(contains(r.error, "killed by SIGSEGV")) << r.error;
   EXPECT_TRUE(contains(r.error, "the last lines it printed:\nabout to crash, said the spring"))
       << r.error;
@@ -313,7 +317,7 @@ TEST_F(HostileProbe, ACrashReportEndsWithTheLastLinesItPrinted) {
 TEST_F(HostileProbe, AnInfiniteLoopTimesOutWithinTheLimitAndTheNextRequestWorks) {
   probe.setRequestTimeout(1.0);
   const auto t0 = Clock::now();
-  const auto r = probe.springForce(spring(14));
+  const auto r = probe.ask(spring(14));
   const double took = since(t0);
   EXPECT_EQ(r.fault, harness::Fault::TimedOut) << r.error;
   EXPECT_NE(r.error.find("ran out of time: 1 s"), std::string::npos) << r.error;
@@ -324,14 +328,14 @@ TEST_F(HostileProbe, AnInfiniteLoopTimesOutWithinTheLimitAndTheNextRequestWorks)
 }
 
 TEST_F(HostileProbe, NaNAndNegativeZeroComeBackAsThemselves) {
-  const auto r = probe.springForce(spring(15));
+  const auto r = probe.ask(spring(15));
   ASSERT_TRUE(r.ok()) << r.error;
   EXPECT_TRUE(std::isnan(r.force.x()));
   EXPECT_TRUE(r.force.y() == 0 && std::signbit(r.force.y()));
 }
 
 TEST_F(HostileProbe, FilesSocketsProcessesThreadsAndExecutableMemoryAreRefused) {
-  const auto r = probe.springForce(spring(16));
+  const auto r = probe.ask(spring(16));
   EXPECT_FALSE(contains(r.error, "succeeded")) << r.error;
   for (const char* what :
        {"fopen(/etc/passwd): failed", "fopen(scratch.txt, w): failed", "socket: failed",
@@ -343,7 +347,7 @@ TEST_F(HostileProbe, FilesSocketsProcessesThreadsAndExecutableMemoryAreRefused) 
 }
 
 TEST_F(HostileProbe, PrintingALotIsCappedAndHarmless) {
-  const auto r = probe.springForce(spring(17));
+  const auto r = probe.ask(spring(17));
   EXPECT_TRUE(r.ok()) << r.error;
   // The output is drained by another thread: give it a moment.
   std::string out = probe.output();
@@ -357,20 +361,20 @@ TEST_F(HostileProbe, PrintingALotIsCappedAndHarmless) {
 }
 
 TEST_F(HostileProbe, AbortAndExceptionsAndExitAreReportedAsSuch) {
-  EXPECT_TRUE(contains(probe.springForce(spring(18)).error, "killed by SIGABRT")) << "abort()";
-  EXPECT_EQ(probe.springForce(spring(19)).error, "exception: the hostile spring throws");
+  EXPECT_TRUE(contains(probe.ask(spring(18)).error, "killed by SIGABRT")) << "abort()";
+  EXPECT_EQ(probe.ask(spring(19)).error, "exception: the hostile spring throws");
   const int before = probe.starts();
   expectHealthy();
   EXPECT_EQ(probe.starts(), before) << "an exception does not cost the probe";
-  EXPECT_EQ(probe.springForce(spring(21)).error, "the probe crashed: exited with 0");
+  EXPECT_EQ(probe.ask(spring(21)).error, "the probe crashed: exited with 0");
   expectHealthy();
 }
 
 TEST_F(HostileProbe, GarbageOnTheAnswerPipeFailsTheRequestOnly) {
-  const auto r = probe.springForce(spring(20));
+  const auto r = probe.ask(spring(20));
   EXPECT_EQ(r.error.rfind("garbage from the probe: not JSON", 0), 0u) << r.error;
   expectHealthy();
-  const auto big = probe.springForce(spring(22));
+  const auto big = probe.ask(spring(22));
   EXPECT_EQ(big.error.rfind("garbage from the probe: an answer of 1073741824 bytes announced", 0),
             0u)
       << big.error;
@@ -379,17 +383,17 @@ TEST_F(HostileProbe, GarbageOnTheAnswerPipeFailsTheRequestOnly) {
 }
 
 TEST_F(HostileProbe, TheMemoryLimitMakesAHugeAllocationFail) {
-  const auto r = probe.springForce(spring(24));
+  const auto r = probe.ask(spring(24));
   EXPECT_TRUE(contains(r.error, "bad_alloc")) << r.error;
 }
 
 TEST_F(HostileProbe, AfterTooManyStartsRequestsFailAtOnce) {
   probe.setMaxStarts(3);
   for (int k = 0; k < 3; ++k) {
-    EXPECT_TRUE(contains(probe.springForce(spring(13)).error, "SIGSEGV"));
+    EXPECT_TRUE(contains(probe.ask(spring(13)).error, "SIGSEGV"));
   }
   const auto t0 = Clock::now();
-  const auto r = probe.springForce(spring(10));
+  const auto r = probe.ask(spring(10));
   EXPECT_LT(since(t0), 0.05);
   EXPECT_EQ(r.error,
             "the probe was started 3 times (it crashed or ran out of time each time); the "
@@ -401,7 +405,7 @@ TEST(ProbeClient, AMissingProbeFailsEveryRequestWithTheReason) {
   TempDir tmp;
   ProbeClient probe(tmp.path() / "nothing-here", tmp.path() / "run", Limits{});
   probe.setUser(a6::test::sandboxUid(), 65534);
-  const auto r = probe.emit(harness::EmitRequest{});
+  const auto r = probe.ask(harness::EmitRequest{});
   EXPECT_TRUE(contains(r.error, "could not start the probe: exec ")) << r.error;
   EXPECT_TRUE(contains(r.error, "No such file or directory")) << r.error;
 }
@@ -413,7 +417,7 @@ TEST(ProbeClient, AProbeThatDiesBeforeReadingNeverTakesTheGraderWithIt) {
   harness::SimulateRequest big;
   big.particles.resize(20000);
   for (int k = 0; k < 5; ++k) {
-    const auto r = probe.simulate(big);
+    const auto r = probe.ask(big);
     EXPECT_EQ(r.error, "the probe crashed: exited with 0");
   }
   EXPECT_EQ(probe.starts(), 5);
@@ -433,7 +437,7 @@ TEST(ProbeClient, AsRootItsProtectionsApplyWithoutNotes) {
   probe.setUser(a6::test::sandboxUid(), 65534);
   probe.setHidden({tmp.path() / "secret"});
   fs::create_directories(tmp.path() / "secret");
-  EXPECT_TRUE(probe.springForce(spring(1)).ok());
+  EXPECT_TRUE(probe.ask(spring(1)).ok());
   for (const std::string& note : probe.notes()) ADD_FAILURE() << note;
 }
 

@@ -17,6 +17,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "harness/wire_fields.h"
@@ -222,32 +223,35 @@ T filled(Filler& f) {
   return x;
 }
 
-// A request: filled, encoded under `kind`, sent through text, decoded; every field the same, and
-// the body holds exactly the listed fields.
-template <typename T>
-void requestSurvives(Filler& f, const char* kind, json (*encode)(const T&),
-                     T (*decode)(const json&)) {
-  everyMemberListed<T>(kind);
-  const T a = filled<T>(f);
-  const json j = throughText(encode(a));
-  EXPECT_EQ(j["kind"], kind);
-  EXPECT_EQ(sorted(keysOf(j["body"])), sorted(namesOf(T{}))) << kind;
-  const T b = decode(j["body"]);
-  EXPECT_EQ(leavesOf(a), leavesOf(b)) << kind;
-  EXPECT_GT(leavesOf(a).size(), namesOf(T{}).size() - 1) << kind;
-}
+// Request kind K: a request filled, encoded under its kind, sent through text, decoded; every
+// field the same, and the body holds exactly the listed fields. Then its result likewise, after
+// its outcome ("error" and "fault").
+template <std::size_t K>
+void kindSurvives(Filler& f) {
+  using R = std::variant_alternative_t<K, harness::Request>;
+  using Result = typename R::Result;
+  everyMemberListed<R>(R::kKind);
+  const R a = filled<R>(f);
+  const json j = throughText(wire::encodeRequest(harness::Request(std::in_place_index<K>, a)));
+  EXPECT_EQ(j["kind"], R::kKind);
+  EXPECT_EQ(sorted(keysOf(j["body"])), sorted(namesOf(R{}))) << R::kKind;
+  const harness::Request b = wire::decodeRequest(j);
+  ASSERT_EQ(b.index(), K) << R::kKind;
+  EXPECT_EQ(leavesOf(a), leavesOf(std::get<K>(b))) << R::kKind;
+  EXPECT_GT(leavesOf(a).size(), namesOf(R{}).size() - 1) << R::kKind;
 
-// A result, likewise, after its outcome ("error" and "fault").
-template <typename T>
-void resultSurvives(Filler& f, T (*decode)(const json&)) {
-  everyMemberListed<T>("a result");
-  const T a = filled<T>(f);
-  const json j = throughText(wire::encodeResult(a));
-  EXPECT_EQ(sorted(keysOf(j, {"error", "fault"})), sorted(namesOf(T{})));
-  const T b = decode(j);
-  EXPECT_EQ(b.error, a.error);
-  EXPECT_EQ(b.fault, a.fault);
-  EXPECT_EQ(leavesOf(a), leavesOf(b));
+  everyMemberListed<Result>(R::kKind);
+  const Result ra = filled<Result>(f);
+  const json rj = throughText(wire::encodeResult<R>(ra));
+  EXPECT_EQ(sorted(keysOf(rj, {"error", "fault"})), sorted(namesOf(Result{}))) << R::kKind;
+  const Result rb = wire::decodeResult<R>(rj);
+  EXPECT_EQ(rb.error, ra.error);
+  EXPECT_EQ(rb.fault, ra.fault);
+  EXPECT_EQ(leavesOf(ra), leavesOf(rb)) << R::kKind;
+}
+template <std::size_t... K>
+void everyKindSurvives(Filler& f, std::index_sequence<K...>) {
+  (kindSurvives<K>(f), ...);
 }
 
 TEST(WireDoubles, SpecialValuesSurviveBitForBit) {
@@ -327,28 +331,11 @@ TEST(WireDoubles, AnythingElseIsRefusedWithTheReason) {
 // ---- requests
 // ------------------------------------------------------------------------------------------
 
-// Generated from the field lists: every listed field of every request and result survives.
-TEST(WireRequests, EveryRequestSurvivesWithEveryField) {
+// Generated from the field lists: every listed field of every request kind and its result
+// survives.
+TEST(WireRequests, EveryRequestAndResultSurvivesWithEveryField) {
   Filler f;
-  requestSurvives(f, "springForce", wire::encodeSpringForce, wire::decodeSpringForceRequest);
-  requestSurvives(f, "forces", wire::encodeForces, wire::decodeForcesRequest);
-  requestSurvives(f, "simulate", wire::encodeSimulate, wire::decodeSimulateRequest);
-  requestSurvives(f, "buildCloth", wire::encodeBuildCloth, wire::decodeBuildClothRequest);
-  requestSurvives(f, "emit", wire::encodeEmit, wire::decodeEmitRequest);
-  requestSurvives(f, "runParticles", wire::encodeRunParticles, wire::decodeRunParticlesRequest);
-  requestSurvives(f, "runBox2D", wire::encodeRunBox2D, wire::decodeRunBox2DRequest);
-  requestSurvives(f, "runScene", wire::encodeRunScene, wire::decodeRunSceneRequest);
-}
-
-TEST(WireResults, EveryResultSurvivesWithEveryField) {
-  Filler f;
-  resultSurvives<harness::SpringForceResult>(f, wire::decodeSpringForce);
-  resultSurvives<harness::ForcesResult>(f, wire::decodeForces);
-  resultSurvives<harness::SimulateResult>(f, wire::decodeSimulate);
-  resultSurvives<harness::ClothResult>(f, wire::decodeBuildCloth);
-  resultSurvives<harness::ParticlesResult>(f, wire::decodeParticles);
-  resultSurvives<harness::Box2DResult>(f, wire::decodeRunBox2D);
-  resultSurvives<harness::SceneResult>(f, wire::decodeRunScene);
+  everyKindSurvives(f, std::make_index_sequence<std::variant_size_v<harness::Request>>());
 }
 
 // The types inside requests and results: every member listed too.
@@ -376,28 +363,32 @@ TEST(WireFields, EveryMemberOfEveryTypeInsideIsListed) {
 TEST(WireResults, AProbesFaultSurvivesAndOthersAreRefused) {
   harness::SceneResult r;
   r.fail(harness::Fault::Refused, "runScene: frame -1 is outside [0, 36000]");
-  const harness::SceneResult back = wire::decodeRunScene(throughText(wire::encodeResult(r)));
+  const harness::SceneResult back = wire::decodeResult<harness::SceneRequest>(
+      throughText(wire::encodeResult<harness::SceneRequest>(r)));
   EXPECT_EQ(back.fault, harness::Fault::Refused);
   EXPECT_EQ(back.error, r.error);
   // Only the grader finds crashes, time-outs and the like: a probe claiming one is garbage.
-  EXPECT_THROW(wire::decodeRunScene(json{{"error", "x"}, {"fault", "timedOut"}}), wire::Malformed);
+  EXPECT_THROW(
+      wire::decodeResult<harness::SceneRequest>(json{{"error", "x"}, {"fault", "timedOut"}}),
+      wire::Malformed);
   // An error without a fault is an exception's.
-  EXPECT_EQ(wire::decodeRunScene(json{{"error", "x"}}).fault, harness::Fault::Exception);
+  EXPECT_EQ(wire::decodeResult<harness::SceneRequest>(json{{"error", "x"}}).fault,
+            harness::Fault::Exception);
 }
 
 TEST(WireResults, AnErrorAloneIsAWholeResultAndKeepsItsText) {
   const json j = throughText(json{{"error", "exception: boom"}});
-  EXPECT_EQ(wire::decodeSpringForce(j).error, "exception: boom");
-  EXPECT_EQ(wire::decodeSimulate(j).error, "exception: boom");
-  EXPECT_EQ(wire::decodeRunScene(j).error, "exception: boom");
-  EXPECT_TRUE(wire::decodeRunBox2D(j).poses.empty());
+  EXPECT_EQ(wire::decodeResult<harness::SpringForceRequest>(j).error, "exception: boom");
+  EXPECT_EQ(wire::decodeResult<harness::SimulateRequest>(j).error, "exception: boom");
+  EXPECT_EQ(wire::decodeResult<harness::SceneRequest>(j).error, "exception: boom");
+  EXPECT_TRUE(wire::decodeResult<harness::Box2DRequest>(j).poses.empty());
 }
 
 TEST(WireResults, InvalidUtf8InAnErrorIsReplacedNotRefused) {
   harness::SpringForceResult r;
   r.error = "exception: bad bytes \xff\xfe here";
-  const std::string text = wire::dump(wire::encodeResult(r));
-  const auto back = wire::decodeSpringForce(wire::parse(text));
+  const std::string text = wire::dump(wire::encodeResult<harness::SpringForceRequest>(r));
+  const auto back = wire::decodeResult<harness::SpringForceRequest>(wire::parse(text));
   EXPECT_NE(back.error.find("bad bytes"), std::string::npos);
   EXPECT_NE(back.error.find("\xef\xbf\xbd"), std::string::npos) << "U+FFFD in place of bad bytes";
 }
@@ -425,61 +416,71 @@ TEST(WireMalformed, AMissingFieldIsNamedWithWhereItWas) {
   harness::SimulateResult r;
   r.recordedFrames = {1, 2};
   r.states = {{Particle{}}, {Particle{}, Particle{}}};
-  json j = wire::encodeResult(r);
+  json j = wire::encodeResult<harness::SimulateRequest>(r);
   j["states"][1][1].erase("m");
-  const std::string e = errorOf([&] { wire::decodeSimulate(j); });
-  EXPECT_NE(e.find("SimulateResult"), std::string::npos) << e;
+  const std::string e = errorOf([&] { wire::decodeResult<harness::SimulateRequest>(j); });
+  EXPECT_NE(e.find("the answer to simulate"), std::string::npos) << e;
   EXPECT_NE(e.find("states[1][1]"), std::string::npos) << e;
   EXPECT_NE(e.find("missing field 'm'"), std::string::npos) << e;
 }
 
 TEST(WireMalformed, AWrongTypeIsNamed) {
-  json j = wire::encodeResult(harness::SpringForceResult{});
+  json j = wire::encodeResult<harness::SpringForceRequest>({});
   j["force"] = json::array({1.0});
-  EXPECT_NE(errorOf([&] { wire::decodeSpringForce(j); }).find("expected [x, y]"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf([&] { wire::decodeResult<harness::SpringForceRequest>(j); }).find("expected [x, y]"),
+      std::string::npos);
   j["force"] = "north";
-  EXPECT_NE(errorOf([&] { wire::decodeSpringForce(j); }).find("force"), std::string::npos);
-  EXPECT_NE(errorOf([&] { wire::decodeSpringForce(json::array()); }).find("expected an object"),
+  EXPECT_NE(errorOf([&] { wire::decodeResult<harness::SpringForceRequest>(j); }).find("force"),
             std::string::npos);
-  json cloth = wire::encodeResult(harness::ClothResult{});
+  EXPECT_NE(errorOf([&] {
+              wire::decodeResult<harness::SpringForceRequest>(json::array());
+            }).find("expected an object"),
+            std::string::npos);
+  json cloth = wire::encodeResult<harness::ClothRequest>({});
   cloth["springs"] = json::array(
       {json{{"i", 1.5}, {"j", 0}, {"restLength", 1}, {"ks", 1}, {"kd", 1}, {"type", "shear"}}});
-  EXPECT_NE(errorOf([&] { wire::decodeBuildCloth(cloth); }).find("expected an integer"),
+  EXPECT_NE(errorOf([&] {
+              wire::decodeResult<harness::ClothRequest>(cloth);
+            }).find("expected an integer"),
             std::string::npos);
   cloth["springs"][0]["i"] = 1;
   cloth["springs"][0]["type"] = "rubber";
-  EXPECT_NE(errorOf([&] { wire::decodeBuildCloth(cloth); }).find("'rubber' is not one of"),
+  EXPECT_NE(errorOf([&] {
+              wire::decodeResult<harness::ClothRequest>(cloth);
+            }).find("'rubber' is not one of"),
             std::string::npos);
-  json counts = wire::encodeResult(harness::ParticlesResult{});
+  json counts = wire::encodeResult<harness::EmitRequest>({});
   counts["counts"] = json::array({5000000000LL});
-  EXPECT_NE(errorOf([&] { wire::decodeParticles(counts); }).find("does not fit an int"),
+  EXPECT_NE(errorOf([&] {
+              wire::decodeResult<harness::EmitRequest>(counts);
+            }).find("does not fit an int"),
             std::string::npos);
 }
 
 // ---- serve
 // ------------------------------------------------------------------------------------------------------
 
-// A StudentCode that remembers the request it got and answers with a fixed result.
+// A StudentCode that remembers the spring request it got and answers it with a fixed result,
+// throws on emit when told to, and answers the rest empty.
 class Recorder final : public harness::StudentCode {
  public:
   harness::SpringForceRequest springRequest;
   bool throwOnEmit = false;
-  harness::SpringForceResult springForce(const harness::SpringForceRequest& r) override {
-    springRequest = r;
-    harness::SpringForceResult result;
-    result.force = Vec2(std::numeric_limits<double>::quiet_NaN(), -0.0);
-    return result;
+
+ private:
+  harness::Answer respond(const harness::Request& request) override {
+    if (const auto* r = std::get_if<harness::SpringForceRequest>(&request)) {
+      springRequest = *r;
+      harness::SpringForceResult result;
+      result.force = Vec2(std::numeric_limits<double>::quiet_NaN(), -0.0);
+      return harness::answerTo<harness::SpringForceRequest>(result);
+    }
+    if (throwOnEmit && std::holds_alternative<harness::EmitRequest>(request)) {
+      throw std::runtime_error("escaped the harness");
+    }
+    return harness::failedAnswer(request, {});
   }
-  harness::ForcesResult forces(const harness::ForcesRequest&) override { return {}; }
-  harness::SimulateResult simulate(const harness::SimulateRequest&) override { return {}; }
-  harness::ClothResult buildCloth(const ClothSpec&) override { return {}; }
-  harness::ParticlesResult emit(const harness::EmitRequest&) override {
-    if (throwOnEmit) throw std::runtime_error("escaped the harness");
-    return {};
-  }
-  harness::ParticlesResult runParticles(const harness::ParticleRunRequest&) override { return {}; }
-  harness::Box2DResult runBox2D(const harness::Box2DRequest&) override { return {}; }
 };
 
 TEST(WireServe, ARequestReachesTheCodeAndItsResultComesBack) {
@@ -487,10 +488,10 @@ TEST(WireServe, ARequestReachesTheCodeAndItsResultComesBack) {
   harness::SpringForceRequest r;
   r.p2.x = Vec2(1, -kInf);
   r.ks = 42;
-  const json answer = throughText(wire::serve(code, throughText(wire::encodeSpringForce(r))));
+  const json answer = throughText(wire::serve(code, throughText(wire::encodeRequest(r))));
   EXPECT_EQ(leavesOf(code.springRequest), leavesOf(r));
   EXPECT_EQ(code.springRequest.ks, 42);
-  const auto result = wire::decodeSpringForce(answer);
+  const auto result = wire::decodeResult<harness::SpringForceRequest>(answer);
   EXPECT_TRUE(result.ok()) << result.error;
   EXPECT_TRUE(std::isnan(result.force.x()));
   EXPECT_TRUE(std::signbit(result.force.y()) && result.force.y() == 0.0);
@@ -499,7 +500,7 @@ TEST(WireServe, ARequestReachesTheCodeAndItsResultComesBack) {
 TEST(WireServe, AnUnknownKindIsAnErrorNotAnException) {
   Recorder code;
   const json answer = wire::serve(code, json{{"kind", "teleport"}, {"body", json::object()}});
-  const auto result = wire::decodeSpringForce(answer);
+  const auto result = wire::decodeResult<harness::SpringForceRequest>(answer);
   EXPECT_NE(result.error.find("does not know the request kind 'teleport'"), std::string::npos)
       << result.error;
 }
@@ -512,7 +513,7 @@ TEST(WireServe, MalformedRequestsAreErrorsNotExceptions) {
         json{{"kind", "springForce"}, {"body", json{{"p1", 1}}}}}) {
     json answer;
     EXPECT_NO_THROW(answer = wire::serve(code, bad)) << wire::dump(bad);
-    const std::string error = wire::decodeSpringForce(answer).error;
+    const std::string error = wire::decodeResult<harness::SpringForceRequest>(answer).error;
     EXPECT_NE(error.find("malformed request"), std::string::npos)
         << wire::dump(bad) << " -> " << error;
   }
@@ -521,16 +522,9 @@ TEST(WireServe, MalformedRequestsAreErrorsNotExceptions) {
 TEST(WireServe, AnExceptionEscapingTheCodeIsAnError) {
   Recorder code;
   code.throwOnEmit = true;
-  const json answer = wire::serve(code, wire::encodeEmit(harness::EmitRequest{}));
-  EXPECT_EQ(wire::decodeParticles(answer).error, "exception: escaped the harness");
-}
-
-TEST(WireServe, RunSceneFallsBackToTheBaseClassAnswer) {
-  Recorder code;
-  harness::SceneRequest r;
-  r.scene = "fire";
-  const auto result = wire::decodeRunScene(wire::serve(code, wire::encodeRunScene(r)));
-  EXPECT_NE(result.error.find("not supported"), std::string::npos) << result.error;
+  const json answer = wire::serve(code, wire::encodeRequest(harness::EmitRequest{}));
+  EXPECT_EQ(wire::decodeResult<harness::EmitRequest>(answer).error,
+            "exception: escaped the harness");
 }
 
 // ---- framing

@@ -92,7 +92,7 @@ TEST(Task1Hidden, RandomSpringsMatchTheSlideFormula) {
     r.kd = draw.coin() ? draw.uniform(0, 5) : 0;
     Particle p1 = r.p1, p2 = r.p2;
     const Vec2 expected = referenceForce(p1, p2, r.restLength, r.ks, r.kd);
-    const harness::SpringForceResult result = student().springForce(r);
+    const harness::SpringForceResult result = student().ask(r);
     A6_ASSERT_RAN(result);
     ASSERT_VEC_NEAR(
         result.force, expected,
@@ -135,7 +135,7 @@ TEST(Task2Hidden, RandomParticlesAndEnvironmentsMatchTheSlideFormulas) {
     r.contact.depth = draw.uniform(-0.2, 0.2);
     r.contact.normal = draw.unit();
 
-    const harness::ForcesResult result = student().forces(r);
+    const harness::ForcesResult result = student().ask(r);
     A6_ASSERT_RAN(result);
     const Tolerance tol = relativeTo(externalForceScale(p, env, r.contact.depth));
     const std::string in = "input: particle " + str(p) + ", g=" + str(env.gravity) +
@@ -220,7 +220,7 @@ TEST(Task3Hidden, RandomChainsFollowSymplecticEulerWithSubsteps) {
     r.recordEvery = 10;
     r.referenceForces = true;
 
-    const harness::SimulateResult result = student().simulate(r);
+    const harness::SimulateResult result = student().ask(r);
     A6_ASSERT_RAN(result);
     ASSERT_EQ(result.states.size(), 3u) << currentTask() << ": expected 3 recorded states";
     // Positions relative to the chain's extent, velocities to its speed after falling for the run.
@@ -277,7 +277,7 @@ TEST(Task4Hidden, RandomClothSpecsGiveTheGridAndItsSprings) {
     const Tolerance length = relativeTo(spec.size + spec.origin.norm());
 
     // Read relative to base (a builder that forgot base loses Task4Cloth's check of it only).
-    const harness::ClothResult result = clothPart(student().buildCloth(spec), n);
+    const harness::ClothResult result = clothPart(student().ask(harness::ClothRequest{spec}), n);
     A6_ASSERT_RAN(result);
     ASSERT_EQ(result.particles.size(), static_cast<std::size_t>((n + 1) * (n + 1)))
         << currentTask() << ": " << in << hint("(n + 1)² particles");

@@ -107,7 +107,7 @@ TEST(Task2Hidden, DragOpposesRandomVelocities) {
     r.particle.m = draw.uniform(0.01, 5);
     r.particle.v = draw.vec(4);
     r.env.drag = draw.uniform(0.1, 2);
-    const harness::ForcesResult result = student().forces(r);
+    const harness::ForcesResult result = student().ask(r);
     A6_ASSERT_RAN(result);
     ASSERT_VEC_NEAR(result.drag, Vec2(-r.env.drag * r.particle.v),
                     relativeTo(r.env.drag * r.particle.v.norm()))

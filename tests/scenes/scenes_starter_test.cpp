@@ -49,7 +49,7 @@ TEST(StarterScenes, RunSceneThroughTheHarnessReturnsEverySnapshot) {
     harness::SceneRequest request;
     request.scene = name;
     request.frames = {0, 30};
-    const harness::SceneResult result = student->runScene(request);
+    const harness::SceneResult result = student->ask(request);
     ASSERT_TRUE(result.ok()) << name << ": " << result.error;
     ASSERT_EQ(result.snapshots.size(), 2u) << name;
   }

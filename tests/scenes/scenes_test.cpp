@@ -465,7 +465,7 @@ TEST(RunScene, ReturnsSnapshotsAtTheRequestedFrames) {
   harness::SceneRequest request;
   request.scene = "cloth_shear";
   request.frames = {0, 30, 10, 30};
-  const harness::SceneResult result = student->runScene(request);
+  const harness::SceneResult result = student->ask(request);
   ASSERT_TRUE(result.ok()) << result.error;
   ASSERT_EQ(result.snapshots.size(), 4u);
   const double dt = defaultParams("cloth_shear").dt;
@@ -486,7 +486,7 @@ TEST(RunScene, UsesTheGivenParametersWhenAsked) {
   request.frames = {30};
   request.useDefaults = false;
   request.params = defaultParams("stiff_cloth_10");  // ten substeps: the cloth holds
-  const harness::SceneResult result = student->runScene(request);
+  const harness::SceneResult result = student->ask(request);
   ASSERT_TRUE(result.ok()) << result.error;
   Snapshot expected = run("stiff_cloth_10", 30, {30})[0];
   expected.scene = "stiff_cloth_1";
@@ -498,11 +498,11 @@ TEST(RunScene, ReportsBadRequestsAsErrors) {
   harness::SceneRequest unknown;
   unknown.scene = "no_such_scene";
   unknown.frames = {0};
-  EXPECT_FALSE(student->runScene(unknown).ok());
+  EXPECT_FALSE(student->ask(unknown).ok());
   harness::SceneRequest negative;
   negative.scene = "pendulum";
   negative.frames = {-1};
-  EXPECT_FALSE(student->runScene(negative).ok());
+  EXPECT_FALSE(student->ask(negative).ok());
 }
 
 }  // namespace

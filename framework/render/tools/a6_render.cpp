@@ -7,7 +7,7 @@
 //   a6_render_solution --goldens [--only NAME,...] [--variant SUFFIX]
 //   a6_render_solution --replays [--out DIR]
 //
-// Scenes run through the same harness request as the golden tests (StudentCode::runScene,
+// Scenes run through the same harness request as the golden tests (a SceneRequest,
 // in-process here), so what this program draws is what the tests compare.
 //
 // Design note: two binaries. a6_render links the configured student files (A6_STUDENT) so a
@@ -249,7 +249,7 @@ harness::SceneResult runScene(const std::string& scene, const std::vector<int>& 
   harness::SceneRequest request;
   request.scene = scene;
   request.frames = frames;
-  return harness::makeInProcess()->runScene(request);
+  return harness::makeInProcess()->ask(request);
 }
 
 std::string frameFile(const std::string& scene, int frame) {
@@ -472,7 +472,7 @@ int writeReplays(const Options& o) {
     request.scene = scene;
     request.frames = replay::replayFrames(frame);
     request.lean = true;
-    const harness::SceneResult result = harness::makeInProcess()->runScene(request);
+    const harness::SceneResult result = harness::makeInProcess()->ask(request);
     if (!result.ok()) {
       std::fprintf(stderr, "a6_render: %s: %s\n", scene.c_str(), result.error.c_str());
       return 1;

@@ -202,7 +202,7 @@ std::string knownAs(const std::string& id) {
 // (however its zeros happen to fit a wrong form on the inputs the checks used).
 template <class Pick, class Zero>
 bool allZero(const Transcript& t, Pick of, Zero zero) {
-  for (const auto& x : t.springs) {
+  for (const auto& x : t.of<harness::SpringForceRequest>()) {
     if (of(x.request) && !zero(x.result)) return false;
   }
   return true;
@@ -217,7 +217,7 @@ MistakeModel forceModel(int i, int j) {
     const auto forces = [](const SpringForceRequest& r) { return !r.jacobians; };
     const auto zero = [](const SpringForceResult& a) { return a.force == Vec2::Zero(); };
     if (allZero(t, forces, zero)) return out;
-    for (const auto& x : t.springs) {
+    for (const auto& x : t.of<harness::SpringForceRequest>()) {
       const SpringForceRequest& r = x.request;
       const std::optional<Geometry> g = geometryOf(r);
       if (!g || r.jacobians) continue;
@@ -248,7 +248,7 @@ MistakeModel jacobianModel(int i, int j) {
       return a.dfdx == Mat2::Zero() && a.dfdv == Mat2::Zero();
     };
     if (allZero(t, jacobians, zero)) return out;
-    for (const auto& x : t.springs) {
+    for (const auto& x : t.of<harness::SpringForceRequest>()) {
       const SpringForceRequest& r = x.request;
       const std::optional<Geometry> g = geometryOf(r);
       if (!g || !r.jacobians) continue;

@@ -36,7 +36,8 @@ bool same(const harness::SpringForceResult& a, const harness::SpringForceResult&
 std::vector<MistakeModel> task1Mistakes() {
   auto judge = [](const Transcript& t) {
     return judgeEach(
-        t.springs, [](const SpringForceRequest& r) { return answer(r, true); },
+        t.of<harness::SpringForceRequest>(),
+        [](const SpringForceRequest& r) { return answer(r, true); },
         [](const SpringForceRequest& r) { return answer(r, false); }, same);
   };
   return {MistakeModel{

@@ -58,7 +58,8 @@ bool same(const ForcesResult& a, const ForcesResult& b) {
 MistakeModel model(const char* id, Flaw flaw, const char* text) {
   auto judge = [flaw](const Transcript& t) {
     return judgeEach(
-        t.forces, [](const ForcesRequest& r) { return std::optional(forces(r, Flaw::None)); },
+        t.of<harness::ForcesRequest>(),
+        [](const ForcesRequest& r) { return std::optional(forces(r, Flaw::None)); },
         [flaw](const ForcesRequest& r) { return std::optional(forces(r, flaw)); }, same);
   };
   return MistakeModel{id, 2, text, judge};

@@ -135,7 +135,8 @@ MistakeModel model(const std::vector<const WrongPart*>& wrong) {
   }
   auto judge = [form](const Transcript& t) {
     return judgeEach(
-        t.simulations, [](const SimulateRequest& r) { return simulate(r, StepForm{}); },
+        t.of<harness::SimulateRequest>(),
+        [](const SimulateRequest& r) { return simulate(r, StepForm{}); },
         [form](const SimulateRequest& r) { return simulate(r, form); }, sameRun);
   };
   MistakeModel m{"t3_" + key, 3, text + ".", judge};

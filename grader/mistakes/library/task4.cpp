@@ -129,16 +129,17 @@ bool same(const ClothResult& a, const ClothResult& b) {
 }
 
 // The cloth of a spec the checks asked for (none beyond 200 cells a side: not a check's).
-std::optional<ClothResult> answer(const ClothSpec& spec, Flaw flaw) {
-  if (spec.n < 1 || spec.n > 200) return std::nullopt;
-  return cloth(spec, flaw);
+std::optional<ClothResult> answer(const harness::ClothRequest& request, Flaw flaw) {
+  if (request.spec.n < 1 || request.spec.n > 200) return std::nullopt;
+  return cloth(request.spec, flaw);
 }
 
 MistakeModel model(const char* id, Flaw flaw, const char* text) {
   auto judge = [flaw](const Transcript& t) {
     return judgeEach(
-        t.cloths, [](const ClothSpec& s) { return answer(s, Flaw::None); },
-        [flaw](const ClothSpec& s) { return answer(s, flaw); }, same);
+        t.of<harness::ClothRequest>(),
+        [](const harness::ClothRequest& r) { return answer(r, Flaw::None); },
+        [flaw](const harness::ClothRequest& r) { return answer(r, flaw); }, same);
   };
   return MistakeModel{id, 4, text, judge};
 }

@@ -65,7 +65,8 @@ bool same(const ParticlesResult& a, const ParticlesResult& b) {
 MistakeModel updateModel(const char* id, Flaw flaw, const char* text) {
   auto judge = [flaw](const Transcript& t) {
     return judgeEach(
-        t.particleRuns, [](const ParticleRunRequest& r) { return run(r, Flaw::None); },
+        t.of<harness::ParticleRunRequest>(),
+        [](const ParticleRunRequest& r) { return run(r, Flaw::None); },
         [flaw](const ParticleRunRequest& r) { return run(r, flaw); }, same);
   };
   return MistakeModel{id, 5, text, judge};
@@ -78,7 +79,7 @@ constexpr std::size_t kSample = 200;
 MistakeModel spreadModel() {
   auto judge = [](const Transcript& t) {
     std::vector<Likeness> out;
-    for (const auto& x : t.emissions) {
+    for (const auto& x : t.of<harness::EmitRequest>()) {
       const EmitterSpec& spec = x.request.spec;
       if (spec.velocitySpread <= 0 || x.result.particles.size() < kSample) continue;
       const bool allMean = std::all_of(x.result.particles.begin(), x.result.particles.end(),
@@ -100,7 +101,7 @@ MistakeModel spreadModel() {
 MistakeModel discModel() {
   auto judge = [](const Transcript& t) {
     std::vector<Likeness> out;
-    for (const auto& x : t.emissions) {
+    for (const auto& x : t.of<harness::EmitRequest>()) {
       const EmitterSpec& spec = x.request.spec;
       const auto& ps = x.result.particles;
       if (spec.radius <= 0 || ps.size() < kSample) continue;

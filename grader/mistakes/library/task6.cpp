@@ -29,7 +29,7 @@ MistakeModel jointModel(const char* id, const char* scene, const char* type, Joi
   std::string sceneName = scene, typeName = type;
   auto all = [sceneName, typeName, judge](const Transcript& t) {
     std::vector<Likeness> out;
-    for (const auto& x : t.box2d) {
+    for (const auto& x : t.of<harness::Box2DRequest>()) {
       if (x.request.scene != sceneName) continue;
       const auto& joints = typeName == "mouse" ? x.result.dragJoints : x.result.builtJoints;
       for (const JointInfo& j : joints) {
@@ -117,7 +117,7 @@ int jointChange(const harness::Box2DResult& r, int step) {
 // starter make none, so they neither destroy nor forget one).
 std::vector<Likeness> jointsDestroyed(const Transcript& t) {
   std::vector<Likeness> out;
-  for (const auto& x : t.box2d) {
+  for (const auto& x : t.of<harness::Box2DRequest>()) {
     bool made = false;
     for (const DragEvent& e : x.request.drag) {
       if (e.kind == DragEvent::Kind::Begin) made = jointChange(x.result, e.step) == 1;
@@ -130,7 +130,7 @@ std::vector<Likeness> jointsDestroyed(const Transcript& t) {
 }
 std::vector<Likeness> pointersCleared(const Transcript& t) {
   std::vector<Likeness> out;
-  for (const auto& x : t.box2d) {
+  for (const auto& x : t.of<harness::Box2DRequest>()) {
     for (const int cleared : x.result.endDragCleared)
       out.push_back(shows(cleared == 0, cleared == 1));
   }
@@ -139,7 +139,7 @@ std::vector<Likeness> pointersCleared(const Transcript& t) {
 // A drag begun on a sleeping body: awake after that step.
 std::vector<Likeness> bodiesWoken(const Transcript& t) {
   std::vector<Likeness> out;
-  for (const auto& x : t.box2d) {
+  for (const auto& x : t.of<harness::Box2DRequest>()) {
     std::size_t drag = 0;
     for (const DragEvent& e : x.request.drag) {
       if (e.kind != DragEvent::Kind::Begin || drag >= x.result.dragJoints.size()) continue;

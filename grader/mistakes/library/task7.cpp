@@ -161,7 +161,8 @@ MistakeModel model(const std::vector<const WrongPart*>& wrong) {
   }
   auto judge = [form](const Transcript& t) {
     return judgeEach(
-        t.simulations, [](const SimulateRequest& r) { return simulate(r, ImplicitForm{}); },
+        t.of<harness::SimulateRequest>(),
+        [](const SimulateRequest& r) { return simulate(r, ImplicitForm{}); },
         [form](const SimulateRequest& r) { return simulate(r, form); }, sameRun);
   };
   MistakeModel m{"t7_" + key, 7, text + ".", judge};
