@@ -15,6 +15,7 @@
 namespace a6::test {
 namespace {
 
+using harness::JacobiansResult;
 using harness::SimulateRequest;
 using harness::SimulateResult;
 using harness::SpringData;
@@ -52,9 +53,8 @@ std::string matrix(const Mat2& m) {
          "]]";
 }
 
-SpringForceResult jacobiansOf(SpringForceRequest r) {
-  r.jacobians = true;
-  return student().ask(r);
+JacobiansResult jacobiansOf(const SpringForceRequest& r) {
+  return student().ask(harness::JacobiansRequest{r});
 }
 
 // |actual - hand| <= tol entry by entry; the message names the matrix, both values and the input.
@@ -74,7 +74,7 @@ constexpr char kSignHint[] =
 // Runs the Jacobians of r and compares them with hand-computed values.
 void expectJacobians(const SpringForceRequest& r, const Mat2& dfdx, const Mat2& dfdv,
                      const std::string& hintText) {
-  const SpringForceResult j = jacobiansOf(r);
+  const JacobiansResult j = jacobiansOf(r);
   A6_ASSERT_RAN(j) << "\n" << input(r);
   EXPECT_TRUE(sameMatrix("dfdx", j.dfdx, dfdx, r.ks, r)) << hint(hintText);
   EXPECT_TRUE(sameMatrix("dfdv", j.dfdv, dfdv, r.kd, r)) << hint(hintText);
@@ -132,7 +132,7 @@ TEST(Task7Implicit, DampingJacobianActsOnlyAlongTheSpring) {
 
 TEST(Task7Implicit, CoincidentParticlesGiveZeroJacobians) {
   const SpringForceRequest r = springOf(Vec2(1, 1), Vec2(1, 1), 0.5, 100, 2);
-  const SpringForceResult j = jacobiansOf(r);
+  const JacobiansResult j = jacobiansOf(r);
   A6_ASSERT_RAN(j) << "\n" << input(r);
   EXPECT_TRUE(j.dfdx.allFinite() && j.dfdv.allFinite() && j.dfdx.isZero() && j.dfdv.isZero())
       << currentTask() << ": dfdx " << matrix(j.dfdx) << ", dfdv " << matrix(j.dfdv)
@@ -237,7 +237,7 @@ TEST(Task7Implicit, JacobiansMatchFiniteDifferencesOfYourForce) {
       const KnownSpring s = turned(base, 0.9 * k, Vec2(0.3 * k, -0.2 * k));
       const SpringForceRequest& r = s.request;
       if (!forceIsRight(s)) continue;
-      const SpringForceResult j = jacobiansOf(r);
+      const JacobiansResult j = jacobiansOf(r);
       A6_ASSERT_RAN(j) << "\n" << input(r);
       bool ran = true;
       const Differences d = differencesOf(r, 1e-3 * std::max(r.restLength, 1.0), ran);
@@ -502,7 +502,7 @@ Eigen::MatrixXd yourSpringsPart(const SimulateRequest& r, bool& ran) {
   for (const SpringData& spring : r.springs) {
     SpringForceRequest q = springOf(r.particles[spring.i].x, r.particles[spring.j].x,
                                     spring.restLength, spring.ks, spring.kd);
-    const SpringForceResult j = jacobiansOf(q);
+    const JacobiansResult j = jacobiansOf(q);
     ran = ran && j.ok();
     const Mat2 k = h * h * j.dfdx;
     s.block<2, 2>(2 * spring.i, 2 * spring.i) += k;

@@ -173,22 +173,29 @@ class InProcess final : public StudentCode {
   // One student call per request kind: builds the framework objects from the request's plain
   // data, calls the student's functions, and turns what they produced back into plain data.
 
+  // The spring of a request, between copies of its particles.
+  struct SpringOf {
+    Particle p1, p2;
+    Spring spring;
+    explicit SpringOf(const SpringForceRequest& r) : p1(r.p1), p2(r.p2) {
+      spring.p1 = &p1, spring.p2 = &p2;
+      spring.restLength = r.restLength, spring.ks = r.ks, spring.kd = r.kd;
+    }
+  };
+
   SpringForceResult run(const SpringForceRequest& request) {
     return guarded<SpringForceResult>([&](SpringForceResult& result) {
-      Particle p1 = request.p1, p2 = request.p2;
-      Spring s;
-      s.p1 = &p1;
-      s.p2 = &p2;
-      s.restLength = request.restLength;
-      s.ks = request.ks;
-      s.kd = request.kd;
-      if (request.jacobians) {
-        const SpringJacobians j = springJacobians(s);
-        result.dfdx = j.dfdx;
-        result.dfdv = j.dfdv;
-      } else {
-        result.force = s.computeForce();
-      }
+      SpringOf s(request);
+      result.force = s.spring.computeForce();
+    });
+  }
+
+  JacobiansResult run(const JacobiansRequest& request) {
+    return guarded<JacobiansResult>([&](JacobiansResult& result) {
+      SpringOf s(request.spring);
+      const SpringJacobians j = springJacobians(s.spring);
+      result.dfdx = j.dfdx;
+      result.dfdv = j.dfdv;
     });
   }
 

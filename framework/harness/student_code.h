@@ -78,6 +78,7 @@ struct ClothResult;
 struct ParticlesResult;
 struct Box2DResult;
 struct SceneResult;
+struct JacobiansResult;
 
 // Task 1 ---------------------------------------------------------------------------------------
 struct SpringForceRequest {
@@ -85,12 +86,9 @@ struct SpringForceRequest {
   static constexpr const char* kKind = "springForce";
   Particle p1, p2;
   double restLength = 0, ks = 0, kd = 0;
-  bool jacobians = false;  ///< task 7: springJacobians() instead of computeForce()
 };
 struct SpringForceResult : Outcome {
-  Vec2 force = Vec2::Zero();  ///< on p2, N (computeForce; zero when jacobians was asked)
-  Mat2 dfdx = Mat2::Zero();   ///< springJacobians().dfdx, N/m (when jacobians was asked)
-  Mat2 dfdv = Mat2::Zero();   ///< springJacobians().dfdv, N·s/m (when jacobians was asked)
+  Vec2 force = Vec2::Zero();  ///< computeForce(): on p2, N
 };
 
 // Task 2 ---------------------------------------------------------------------------------------
@@ -243,6 +241,17 @@ struct Box2DResult : Outcome {
   std::vector<int> endDragCleared;  ///< per endDrag: 1 if it set the caller's pointer to null
 };
 
+// Task 7 ---------------------------------------------------------------------------------------
+struct JacobiansRequest {
+  using Result = JacobiansResult;
+  static constexpr const char* kKind = "springJacobians";
+  SpringForceRequest spring;  ///< springJacobians() of this spring
+};
+struct JacobiansResult : Outcome {
+  Mat2 dfdx = Mat2::Zero();  ///< N/m
+  Mat2 dfdv = Mat2::Zero();  ///< N·s/m
+};
+
 // Scenes (scenes/scene.h): what golden images are rendered from -------------------------------
 struct SceneRequest {
   using Result = SceneResult;
@@ -262,8 +271,9 @@ struct SceneResult : Outcome {
 };
 
 /// Every request, one type: a request kind is one of these alternatives.
-using Request = std::variant<SpringForceRequest, ForcesRequest, SimulateRequest, ClothRequest,
-                             EmitRequest, ParticleRunRequest, Box2DRequest, SceneRequest>;
+using Request =
+    std::variant<SpringForceRequest, ForcesRequest, SimulateRequest, ClothRequest, EmitRequest,
+                 ParticleRunRequest, Box2DRequest, SceneRequest, JacobiansRequest>;
 
 /// Every answer, one type: the answer to a request holds that request's Result, at the same
 /// index (two kinds may share a Result type, so the index says which request it answers).

@@ -141,7 +141,6 @@ void fields(V& v, harness::JointInfo& i) {
 template <class V>
 void fields(V& v, harness::SpringForceRequest& r) {
   v("p1", r.p1), v("p2", r.p2), v("restLength", r.restLength), v("ks", r.ks), v("kd", r.kd);
-  v("jacobians", r.jacobians);
 }
 template <class V>
 void fields(V& v, harness::ForcesRequest& r) {
@@ -178,11 +177,16 @@ void fields(V& v, harness::SceneRequest& r) {
   v("params", r.params), v("lean", r.lean);
 }
 
+template <class V>
+void fields(V& v, harness::JacobiansRequest& r) {
+  v("spring", r.spring);
+}
+
 // Results (after their outcome) -------------------------------------------------------------------
 
 template <class V>
 void fields(V& v, harness::SpringForceResult& r) {
-  v("force", r.force), v("dfdx", r.dfdx), v("dfdv", r.dfdv);
+  v("force", r.force);
 }
 template <class V>
 void fields(V& v, harness::ForcesResult& r) {
@@ -206,6 +210,10 @@ void fields(V& v, harness::Box2DResult& r) {
   v("bodies", r.bodies), v("poses", r.poses), v("joints", r.joints);
   v("builtJoints", r.builtJoints), v("jointCounts", r.jointCounts);
   v("dragJoints", r.dragJoints), v("endDragCleared", r.endDragCleared);
+}
+template <class V>
+void fields(V& v, harness::JacobiansResult& r) {
+  v("dfdx", r.dfdx), v("dfdv", r.dfdv);
 }
 template <class V>
 void fields(V& v, SceneEnergy& e) {

@@ -19,6 +19,8 @@ using a6::grader::mistakeLibrary;
 using a6::grader::MistakeModel;
 using a6::grader::nameMistakes;
 using a6::grader::Transcript;
+using a6::harness::JacobiansRequest;
+using a6::harness::JacobiansResult;
 using a6::harness::SpringForceRequest;
 using a6::harness::SpringForceResult;
 
@@ -150,12 +152,12 @@ TEST(NameMistakes, AnswersThatFitTwoExplanationsNameNothing) {
 TEST(NameMistakes, AJacobianBlockIsNamedByItsPart) {
   // The spring along x, stretched to 1.5 m (l0 1, ks 10, kd 2): dfdx = -10 diag(1, 1/3), dfdv =
   // -2 diag(1, 0). dfdv with the outer product left out: -2 I; dfdx right.
-  SpringExchange x = stretched(Vec2(0, 0));
-  x.request.jacobians = true;
-  x.result.dfdx << -10, 0, 0, -10.0 / 3;
-  x.result.dfdv << -2, 0, 0, -2;
+  const SpringForceRequest r = stretched(Vec2(0, 0)).request;
+  JacobiansResult j;
+  j.dfdx << -10, 0, 0, -10.0 / 3;
+  j.dfdv << -2, 0, 0, -2;
   Transcript t;
-  add(t, x);
+  t.add("Task7Jacobians.Stretched", JacobiansRequest{r}, j);
   EXPECT_EQ(named(t, {7}), std::set<std::string>{"t7_dfdv_no_outer_product"});
   EXPECT_EQ(named(t, {1}), std::set<std::string>{}) << "a Jacobian request tells task 1 nothing";
 }
@@ -163,12 +165,11 @@ TEST(NameMistakes, AJacobianBlockIsNamedByItsPart) {
 TEST(NameMistakes, AStubIsNamedNothing) {
   // Zero Jacobians for a spring at its rest length with kd = 0 are what dfdx_isotropic with dfdv
   // missing gives there: a stub's zeros never name a mistake.
-  SpringExchange x = stretched(Vec2(0, 0));
-  x.request.p2.x = Vec2(1, 0);
-  x.request.kd = 0;
-  x.request.jacobians = true;
+  SpringForceRequest r = stretched(Vec2(0, 0)).request;
+  r.p2.x = Vec2(1, 0);
+  r.kd = 0;
   Transcript t;
-  add(t, x);
+  t.add("Task7Jacobians.AtRest", JacobiansRequest{r}, JacobiansResult{});
   EXPECT_EQ(named(t, {7}), std::set<std::string>{});
   add(t, stretched(Vec2(0, 0)));  // the force of a stub computeForce
   EXPECT_EQ(named(t, {1, 7}), std::set<std::string>{});

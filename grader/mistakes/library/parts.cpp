@@ -15,6 +15,7 @@
 namespace a6::grader::mistakes {
 namespace {
 
+using harness::JacobiansResult;
 using harness::SpringForceRequest;
 using harness::SpringForceResult;
 
@@ -198,12 +199,12 @@ std::string knownAs(const std::string& id) {
   return id;
 }
 
-// Whether every answer to the requests `of` picks is zero: a stub's, which is named nothing
+// Whether every answer to the requests of kind R is zero: a stub's, which is named nothing
 // (however its zeros happen to fit a wrong form on the inputs the checks used).
-template <class Pick, class Zero>
-bool allZero(const Transcript& t, Pick of, Zero zero) {
-  for (const auto& x : t.of<harness::SpringForceRequest>()) {
-    if (of(x.request) && !zero(x.result)) return false;
+template <class R, class Zero>
+bool allZero(const Transcript& t, Zero zero) {
+  for (const auto& x : t.of<R>()) {
+    if (!zero(x.result)) return false;
   }
   return true;
 }
@@ -214,13 +215,12 @@ MistakeModel forceModel(int i, int j) {
                              dampingForms(), j);
   auto judge = [i, j](const Transcript& t) {
     std::vector<Likeness> out;
-    const auto forces = [](const SpringForceRequest& r) { return !r.jacobians; };
     const auto zero = [](const SpringForceResult& a) { return a.force == Vec2::Zero(); };
-    if (allZero(t, forces, zero)) return out;
+    if (allZero<harness::SpringForceRequest>(t, zero)) return out;
     for (const auto& x : t.of<harness::SpringForceRequest>()) {
       const SpringForceRequest& r = x.request;
       const std::optional<Geometry> g = geometryOf(r);
-      if (!g || r.jacobians) continue;
+      if (!g) continue;
       const Vec2 physics = elasticForms()[0].value(r, *g) + dampingForms()[0].value(r, *g);
       const Vec2 mistaken = elasticForms()[i].value(r, *g) + dampingForms()[j].value(r, *g);
       const double scale = r.ks * std::max(g->l, r.restLength) + r.kd * g->u.norm();
@@ -243,20 +243,19 @@ MistakeModel jacobianModel(int i, int j) {
   auto [id, text] = describe(7, "springJacobians'", "dfdx", dfdxForms(), i, "dfdv", dfdvForms(), j);
   auto judge = [i, j](const Transcript& t) {
     std::vector<Likeness> out;
-    const auto jacobians = [](const SpringForceRequest& r) { return r.jacobians; };
-    const auto zero = [](const SpringForceResult& a) {
+    const auto zero = [](const JacobiansResult& a) {
       return a.dfdx == Mat2::Zero() && a.dfdv == Mat2::Zero();
     };
-    if (allZero(t, jacobians, zero)) return out;
-    for (const auto& x : t.of<harness::SpringForceRequest>()) {
-      const SpringForceRequest& r = x.request;
+    if (allZero<harness::JacobiansRequest>(t, zero)) return out;
+    for (const auto& x : t.of<harness::JacobiansRequest>()) {
+      const SpringForceRequest& r = x.request.spring;
       const std::optional<Geometry> g = geometryOf(r);
-      if (!g || !r.jacobians) continue;
+      if (!g) continue;
       const double scale = std::max(r.ks, r.kd) * (1 + std::max(g->l, r.restLength) / g->l);
-      const auto same = [scale](const SpringForceResult& a, const SpringForceResult& b) {
+      const auto same = [scale](const JacobiansResult& a, const JacobiansResult& b) {
         return nearMatrix(a.dfdx, b.dfdx, scale) && nearMatrix(a.dfdv, b.dfdv, scale);
       };
-      SpringForceResult physics, mistaken;
+      JacobiansResult physics, mistaken;
       physics.dfdx = dfdxForms()[0].value(r, *g), physics.dfdv = dfdvForms()[0].value(r, *g);
       mistaken.dfdx = dfdxForms()[i].value(r, *g), mistaken.dfdv = dfdvForms()[j].value(r, *g);
       out.push_back(likeness(x.result, physics, mistaken, same));
