@@ -18,7 +18,7 @@ add_library(a6_grading OBJECT
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/collector.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/budgeted_student.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/recording_student.cpp
-  ${CMAKE_CURRENT_SOURCE_DIR}/checks/replays.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/replay/runs.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/build/startup.cpp)
 target_include_directories(a6_grading PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_grading PUBLIC a6_suite a6_golden_checks a6_report a6_rubric a6_intake

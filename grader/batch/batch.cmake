@@ -10,7 +10,9 @@ target_include_directories(a6_batch_core PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_batch_core PRIVATE nlohmann_json::nlohmann_json)
 target_compile_options(a6_batch_core PRIVATE ${A6_WARNINGS})
 
-add_executable(a6_batch ${CMAKE_CURRENT_SOURCE_DIR}/batch/batch_main.cpp)
+add_executable(a6_batch ${CMAKE_CURRENT_SOURCE_DIR}/batch/batch_main.cpp
+                        ${CMAKE_CURRENT_SOURCE_DIR}/batch/command_line.cpp
+                        ${CMAKE_CURRENT_SOURCE_DIR}/batch/progress.cpp)
 target_link_libraries(a6_batch PRIVATE a6_batch_core a6_insights_core a6_report a6_process
                                        CLI11::CLI11)
 # The default rubric, as a6_grade reads it: part of every submission's fingerprint, so that a

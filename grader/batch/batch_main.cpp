@@ -53,7 +53,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -72,14 +71,12 @@
 #include <vector>
 
 #include "batch/batch.h"
+#include "batch/command_line.h"
+#include "batch/progress.h"
+#include "common/read_all.h"
 #include "insights/page.h"
 #include "report/report.h"  // writeFileAtomically
 #include "sandbox/process.h"
-
-namespace a6::paths {
-extern const char rubric[];   // the default rubric (cmake/A6FastBuild.cmake, a6_configured_path)
-extern const char starter[];  // the starter files, which the similarity discounts
-}  // namespace a6::paths
 
 namespace fs = std::filesystem;
 using namespace a6::grader;
@@ -90,66 +87,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using a6::grader::process::secondsSince;
 
-constexpr double kDefaultTimeout = 900;  // s per submission: a6_grade's own budget is 420 s
 constexpr const char* kMarker = "batch.json";
 constexpr const char* kLog = "grade.log";
 
 volatile std::sig_atomic_t gSignal = 0;
 extern "C" void onSignal(int signo) { gSignal = signo; }
-
-std::string readAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-fs::path besideProgram(const std::string& name) {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path(name) : self.parent_path() / name;
-}
-
-// `a6_grade --check-rubric --rubric FILE`: "" when the rubric can be used, else what a6_grade
-// said (each problem with its line and fix).
-std::string rubricProblems(const fs::path& grader, const fs::path& rubric) {
-  int out[2];
-  if (pipe2(out, O_CLOEXEC) != 0) return std::string("pipe: ") + std::strerror(errno);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    dup2(out[1], STDOUT_FILENO);
-    dup2(out[1], STDERR_FILENO);
-    execl(grader.c_str(), grader.c_str(), "--check-rubric", "--rubric", rubric.c_str(), nullptr);
-    _exit(127);
-  }
-  ::close(out[1]);
-  std::string said;
-  char buffer[4096];
-  for (ssize_t n; (n = read(out[0], buffer, sizeof buffer)) != 0;) {
-    if (n > 0) said.append(buffer, static_cast<std::size_t>(n));
-    if (n < 0 && errno != EINTR) break;
-  }
-  ::close(out[0]);
-  int status = 0;
-  if (pid < 0 || waitpid(pid, &status, 0) != pid) return "cannot run " + grader.string();
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
-  return said.empty() ? grader.string() + " --check-rubric failed" : said;
-}
-
-std::string oneDecimal(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", x);
-  return buf;
-}
-
-std::string points(const Outcome& o) {
-  if (!o.total) return "";
-  std::ostringstream out;
-  const double ec = o.extraCredit.value_or(0);
-  out << (*o.total - ec) << "/" << o.max.value_or(0);
-  if (ec > 0) out << " +" << ec;
-  return out.str();
-}
 
 // Seconds between two sweeps for strays: 1, or A6_BATCH_SWEEP_SECONDS (the tests set it tiny, to
 // provoke a sweep between a child's exit and its reaping).
@@ -158,94 +100,6 @@ double sweepInterval() {
   const double seconds = text != nullptr ? std::atof(text) : 1.0;
   return seconds >= 0 ? seconds : 1.0;
 }
-
-// An outcome that stands (a re-run skips it): points, even 0 for a submission with nothing to
-// grade in it.
-bool hasGrade(const Outcome& o) {
-  return o.status == kGraded || o.status == kBuildFailed || o.status == kNotGraded;
-}
-
-struct Options {
-  std::string input;
-  std::string out;
-  std::string layout;
-  std::string grader;
-  std::string rubric;
-  std::string kit;
-  std::optional<std::uint64_t> seed;
-  std::optional<double> timeBudget;
-  int jobs = 0;
-  double timeout = kDefaultTimeout;
-  bool force = false;
-  bool keepWork = false;
-  bool similarity = false;
-  std::string starter = a6::paths::starter;
-};
-
-// The progress on stderr: a bar redrawn in place on a terminal, one line per finished
-// submission otherwise (CI logs).
-class Progress {
- public:
-  Progress(int total, int done, int toRun, int jobs, bool tty)
-      : total_(total), done_(done), toRun_(toRun), jobs_(jobs), tty_(tty) {}
-
-  void finished(const Submission& s, const Outcome& o) {
-    ++done_;
-    ++ranNow_;
-    secondsNow_ += o.seconds;
-    if (!hasGrade(o)) ++failed_;
-    std::string line = s.key + ": " + o.status;
-    if (o.total) line += ", " + points(o);
-    line += " (" + oneDecimal(o.seconds) + " s)";
-    if (!o.reason.empty() && o.status != kGraded) line += ": " + o.reason;
-    if (tty_) {
-      // Problems scroll above the bar; the rest only moves the bar.
-      if (!hasGrade(o) || o.status == kBuildFailed) {
-        std::fprintf(stderr, "\r\033[K%s\n", line.c_str());
-      }
-      draw();
-    } else {
-      std::fprintf(stderr, "[%*d/%d] %s; %s\n", width(), done_, total_, line.c_str(),
-                   counters().c_str());
-    }
-  }
-
-  void tick() {
-    if (tty_ && secondsSince(lastDraw_) > 0.5) draw();
-  }
-
-  void clear() {
-    if (tty_) std::fprintf(stderr, "\r\033[K");
-  }
-
- private:
-  int width() const { return static_cast<int>(std::to_string(total_).size()); }
-
-  std::string counters() const {
-    std::string text = std::to_string(failed_) + " failed";
-    const int left = toRun_ - ranNow_;
-    if (left <= 0) return text;
-    if (ranNow_ == 0) return text + ", estimating the time left";
-    // The mean grading so far, for what is left, `jobs` at a time.
-    const double mean = secondsNow_ / ranNow_;
-    return text + ", ~" + duration(mean * left / std::min(jobs_, left)) + " left";
-  }
-
-  void draw() {
-    constexpr int kBar = 24;
-    const int filled = total_ > 0 ? done_ * kBar / total_ : kBar;
-    std::fprintf(stderr, "\r\033[K[%s%s] %d/%d graded, %s", std::string(filled, '#').c_str(),
-                 std::string(kBar - filled, '.').c_str(), done_, total_, counters().c_str());
-    std::fflush(stderr);
-    lastDraw_ = Clock::now();
-  }
-
-  int total_, done_, toRun_, jobs_;
-  int ranNow_ = 0, failed_ = 0;
-  double secondsNow_ = 0;  // of the gradings of this run
-  bool tty_;
-  Clock::time_point lastDraw_{};
-};
 
 // One a6_grade at work.
 struct Running {
@@ -726,107 +580,6 @@ class Batch {
   std::vector<std::size_t> queue_;  // what is to be graded, in order (a grader error: again)
   std::set<std::size_t> regraded_;  // queued again after a grader error (once each)
 };
-
-// Reads the command line into `options`; an exit status when the program ends here (--help, or
-// a command line it refuses).
-std::optional<int> parseCommandLine(int argc, char** argv, Options& options) {
-  CLI::App app{
-      "a6_batch: grades a folder of Assignment 6 submissions, one a6_grade each "
-      "(docs/instructor.md, \"Batch grading\")"};
-  app.add_option("input", options.input,
-                 "the folder of submissions: one sub-folder or archive per student, or an "
-                 "unzipped Gradescope or Canvas export")
-      ->required();
-  app.add_option("--out", options.out, "where the results and gradebook.csv go (created)")
-      ->required();
-  app.add_option("-j,--jobs", options.jobs, "submissions graded at once (default: one per core)")
-      ->check(CLI::Range(1, 256));
-  app.add_option("--timeout", options.timeout,
-                 "seconds one submission may take before its a6_grade is killed (default 900)")
-      ->check(CLI::Range(1.0, 86400.0));
-  app.add_option("--layout", options.layout,
-                 "plain, gradescope or canvas (default: recognised from the folder)")
-      ->check(CLI::IsMember({"plain", "gradescope", "canvas"}));
-  app.add_flag("--force", options.force, "grade everything again, even what is graded already");
-  app.add_option("--grader", options.grader,
-                 "the a6_grade to run (default: the one beside a6_batch)");
-  app.add_option("--rubric", options.rubric, "passed to a6_grade");
-  app.add_option("--kit", options.kit, "passed to a6_grade");
-  app.add_option("--seed", options.seed, "passed to a6_grade (default: its own, per submission)");
-  app.add_option("--time-budget", options.timeBudget, "passed to a6_grade")
-      ->check(CLI::Range(1.0, 86400.0));
-  app.add_flag("--keep-work", options.keepWork,
-               "keep each a6_grade's work folder (objects, probe; removed by default)");
-  app.add_flag("--similarity", options.similarity,
-               "compare the submissions' task files with sim_c++ (listed in insights.html)");
-  app.add_option("--starter", options.starter, "the starter files the similarity discounts");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
-  return std::nullopt;
-}
-
-// The input folder, the output folder (created) and the grader, checked; why not, or "".
-std::string checkPaths(const Options& options, fs::path& input, fs::path& out, fs::path& grader) {
-  std::error_code ec;
-  input = fs::absolute(options.input).lexically_normal();
-  if (!fs::exists(input, ec)) return "no such folder: " + options.input;
-  if (!fs::is_directory(input, ec)) {
-    return options.input +
-           " is not a folder (unzip an export first; a6_grade grades one archive on its own)";
-  }
-  out = fs::absolute(options.out).lexically_normal();
-  if (fs::exists(out, ec) && fs::equivalent(out, input, ec)) {
-    return "--out must not be the input folder itself";
-  }
-  fs::create_directories(out, ec);
-  if (ec) return "cannot create " + out.string() + ": " + ec.message();
-  grader = options.grader.empty() ? besideProgram("a6_grade") : fs::absolute(options.grader);
-  if (access(grader.c_str(), X_OK) != 0) {
-    return "cannot run the grader " + grader.string() +
-           " (build a6_grade beside a6_batch, or give --grader)";
-  }
-  return "";
-}
-
-// A rubric that cannot be used would fail every grading: said now, before any. Why, or "".
-std::string checkRubric(const Options& options, const fs::path& grader) {
-  if (options.rubric.empty()) return "";
-  std::error_code ec;
-  if (!fs::is_regular_file(options.rubric, ec)) return "no rubric file " + options.rubric;
-  std::string problems = rubricProblems(grader, fs::absolute(options.rubric));
-  if (problems.empty()) return "";
-  while (!problems.empty() && problems.back() == '\n') problems.pop_back();
-  return "the rubric " + options.rubric + " cannot be used:\n" + problems;
-}
-
-// One batch at a time per output folder (a second would grade the same students at once): the
-// lock is held until the process ends. Why not, or "".
-std::string lockOutput(const fs::path& out) {
-  const fs::path lockFile = out / ".a6_batch.lock";
-  const int lock = ::open(lockFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0) {
-    return "another a6_batch is writing to " + out.string() + " (" + lockFile.string() + ")";
-  }
-  return "";
-}
-
-// What else decides a grade, for the fingerprints: a change regrades.
-std::string decidingOptions(const Options& options) {
-  std::ostringstream decides;
-  const fs::path rubric =
-      options.rubric.empty() ? fs::path(a6::paths::rubric) : fs::path(options.rubric);
-  decides << "rubric=" << (rubric.empty() ? std::string("default") : readAll(rubric)) << "\n"
-          << "seed=" << (options.seed ? std::to_string(*options.seed) : "default") << "\n"
-          << "time-budget="
-          << (options.timeBudget ? std::to_string(*options.timeBudget) : "default") << "\n";
-  return decides.str();
-}
 
 // Signals only set the flag the loop reads; whatever a dead a6_grade's processes leave is
 // re-parented here, to be killed.

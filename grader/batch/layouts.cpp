@@ -27,6 +27,7 @@
 
 #include "batch/batch.h"
 #include "common/fnv1a.h"
+#include "common/read_all.h"
 
 namespace a6::grader::batch {
 
@@ -46,13 +47,6 @@ std::string lower(std::string s) {
 bool endsWith(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() &&
          s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-std::string readAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // The archive extensions a6_grade's intake reads, longest first.

@@ -29,7 +29,8 @@ set(A6_KIT_DIR ${CMAKE_CURRENT_BINARY_DIR}/kit)
 set(A6_KIT_JSON ${CMAKE_CURRENT_BINARY_DIR}/kit.json)
 
 # The build runs the compiler and the linker in the sandbox (a6_sandbox).
-add_library(a6_build STATIC ${CMAKE_CURRENT_SOURCE_DIR}/build/build.cpp)
+add_library(a6_build STATIC ${CMAKE_CURRENT_SOURCE_DIR}/build/build.cpp
+                            ${CMAKE_CURRENT_SOURCE_DIR}/build/kit.cpp)
 target_include_directories(a6_build PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_build PUBLIC a6_sandbox PRIVATE nlohmann_json::nlohmann_json)
 a6_configured_path(a6_build kit_json "${A6_KIT_JSON}")

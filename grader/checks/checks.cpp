@@ -10,10 +10,10 @@
 #include "checks/budgeted_student.h"
 #include "checks/collector.h"
 #include "checks/recording_student.h"
-#include "checks/replays.h"
 #include "golden_checks.h"
 #include "gtest_flags.h"
-#include "probe/probe_client.h"
+#include "probe/probe_pair.h"
+#include "replay/runs.h"
 #include "suite.h"
 #include "watched_student.h"
 

@@ -23,6 +23,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "common/read_all.h"
 #include "harness/task_files.h"
 #include "sandbox/process.h"
 
@@ -35,13 +36,6 @@ constexpr const char* kTool = "sim_c++";
 constexpr double kToolSeconds = 120;               // per task file, for the whole class
 constexpr std::uintmax_t kLargestFile = 64 << 10;  // bytes: a task file is a few kB
 constexpr int kMinimumRareLines = 4;               // fewer shared rare lines: a coincidence
-
-std::string readAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::vector<std::string> linesOf(const std::string& text) {
   std::vector<std::string> lines;

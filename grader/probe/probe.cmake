@@ -63,6 +63,7 @@ endforeach()
 
 
 # The StudentCode that talks to a sandboxed probe.
-add_library(a6_probe_client STATIC ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_client.cpp)
+add_library(a6_probe_client STATIC ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_client.cpp
+                                   ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_pair.cpp)
 target_link_libraries(a6_probe_client PUBLIC a6_sandbox a6_wire a6_harness_api)
 target_compile_options(a6_probe_client PRIVATE ${A6_WARNINGS})

@@ -1,4 +1,4 @@
-#include "checks/replays.h"
+#include "replay/runs.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,4 +1,4 @@
-// The replays' runs (checks stage, after every check has run and been collected, so they can
+// The replays' runs (made in the checks stage, after every check has been collected, so they can
 // change no score): each scene the public images check, run once more by the student's code from
 // frame 0 to its last image (at least 60 frames), about 60 of its frames recorded for the
 // report's player. A scene whose images' run failed (it crashed or ran out of time) is not run

@@ -1,0 +1,129 @@
+// What the intake does with each entry of a submission, archive or folder alike: the checks it
+// goes through (screen), and the Collector that keeps the chosen copy of each task file and the
+// notes, then writes the copies under their own names. Takes entries' paths, kinds and bytes;
+// gives an Intake (intake.h). For intake.cpp only.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "intake/intake.h"
+
+namespace a6::grader::entries {
+
+namespace fs = std::filesystem;
+
+// At most this many notes about skipped entries; the rest are counted in one last note.
+constexpr std::size_t kMaxEntryNotes = 40;
+
+std::string humanBytes(std::uintmax_t bytes);
+
+// A path as it appears in a note: quoted, control characters escaped, long ones shortened.
+std::string shownPath(const std::string& path);
+
+bool isTaskFile(const std::string& name);
+
+// The task file `name` matches when case is ignored (a near miss worth a note), or "".
+std::string nearMissOf(const std::string& name);
+
+bool isNestedArchive(const std::string& name);
+
+bool validUtf8(const std::string& s);
+
+// A path inside a submission, split into its components. Both '/' and '\' separate (zips made on
+// Windows sometimes use '\'); empty and '.' components are dropped.
+struct EntryPath {
+  std::vector<std::string> parts;
+  bool absolute = false;
+  bool parent = false;  // has a '..' component
+  std::string name() const { return parts.empty() ? std::string() : parts.back(); }
+};
+
+EntryPath splitPath(const std::string& raw);
+
+std::string joinPath(const std::vector<std::string>& parts);
+
+// One copy of a task file found in the submission.
+struct Copy {
+  std::string path;   // as found, '/'-separated, relative to the submission
+  std::size_t depth;  // number of components
+  std::string data;   // its bytes (only for the copy currently chosen)
+};
+
+bool better(const Copy& a, const Copy& b);
+
+// What an intake collects while it reads: the chosen copy of each task file, every copy's path
+// (for the duplicate note) and the notes.
+class Collector {
+ public:
+  explicit Collector(const IntakeLimits& limits) : limits_(limits) {}
+
+  void note(std::string text) { notes_.push_back(std::move(text)); }
+  // A note about one skipped entry; counted but not listed past kMaxEntryNotes.
+  void entryNote(std::string text) {
+    if (entryNotes_++ < kMaxEntryNotes) notes_.push_back(std::move(text));
+  }
+
+  // Whether a copy of `name` at `path` (depth `depth`) could still win, i.e. is worth reading.
+  // The same path twice (a tarball appended to with tar -r) counts as one copy: the later one,
+  // as extracting it would leave.
+  bool wanted(const std::string& name, const std::string& path, std::size_t depth) const {
+    auto it = chosen_.find(name);
+    return it == chosen_.end() || path == it->second.path ||
+           better(Copy{path, depth, {}}, it->second);
+  }
+
+  // Offers a copy that was read in full; checks its content (a refused copy is noted).
+  void offer(const std::string& name, const std::string& path, std::size_t depth, std::string data);
+
+  // Records that a (usable or not) copy of `name` exists at `path`, for the duplicates note.
+  void seen(const std::string& name, const std::string& path) { seen_[name].push_back(path); }
+
+  // Writes the chosen copies into dest and returns the result.
+  Intake finish(const fs::path& dest, const std::string& what, bool anyEntries,
+                bool sawNestedArchive);
+
+  const IntakeLimits& limits() const { return limits_; }
+  bool anyChosen() const { return !chosen_.empty(); }
+
+ private:
+  // Creates dest, readable by the sandbox's user. False (with out.error) when it cannot.
+  static bool makeDest(const fs::path& dest, Intake& out);
+
+  // Writes one chosen copy to `target`, readable by all; notes text that is not UTF-8.
+  // False (with out.error) when it cannot be written.
+  bool write(const fs::path& target, const Copy& copy, Intake& out);
+
+  // When `name` was found more than once: which copy was taken and which were not.
+  void noteDuplicates(const std::string& name, const std::string& taken);
+
+  // The notes about the whole submission: skipped entries not listed, nothing found.
+  void closingNotes(const std::string& what, bool anyEntries, bool sawNestedArchive,
+                    const Intake& out);
+
+  const IntakeLimits& limits_;
+  std::map<std::string, Copy> chosen_;
+  std::map<std::string, std::vector<std::string>> seen_;
+  std::vector<std::string> notes_;
+  std::size_t entryNotes_ = 0;
+};
+
+// What an entry is, archive or folder.
+enum class Kind { Regular, Directory, Symlink, Hardlink, Device, Fifo, Socket, Other };
+
+const char* describe(Kind kind);
+
+// Decides what to do with one entry; notes refusals. Returns the task file name to read, or "".
+// The checks every entry goes through, archive or folder (a regular file, safe path, not too
+// deep, named like a task file).
+std::string screen(Collector& c, const std::string& raw, const EntryPath& p, Kind kind,
+                   const std::string& linkTarget, bool& sawNestedArchive);
+
+std::string tooLarge(const std::string& path, std::uintmax_t size, const IntakeLimits& limits,
+                     bool atLeast);
+
+}  // namespace a6::grader::entries
