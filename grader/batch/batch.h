@@ -1,7 +1,8 @@
 // Grading a folder of submissions (a6_batch, grader/batch/batch_main.cpp): finding the submissions
 // in the layouts TAs receive them in, reading what a6_grade wrote for each, the gradebook, the
 // markers that let an interrupted batch resume, and the summary. The processes (a6_grade per
-// submission, time limits, signals, the progress bar) are batch_main.cpp's.
+// submission, time limits, signals) are batch_main.cpp's, the command line command_line.*'s and
+// the progress bar progress.*'s.
 //
 // Layouts of the input folder:
 //   plain       each sub-folder or archive (.zip .tar .tar.gz .tgz) is one student, named by
