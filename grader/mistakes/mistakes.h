@@ -46,13 +46,14 @@ struct MistakeModel {
 const std::vector<MistakeModel>& mistakeLibrary();
 
 /// The reference's answer to a simulation the checks of task 3 asked for (the reference
-/// stepper with the reference forces: the library's), for the report's replays; empty without
-/// the library, or for a request it cannot answer (the student's own forces).
+/// stepper with the reference forces: the library's, library/steppers.h), for the report's
+/// replays; empty without the library, or for a request it cannot answer (the student's own
+/// forces).
 std::optional<harness::SimulateResult> referenceSimulation(const harness::SimulateRequest& r);
 
 /// The reference's answer to a run of particles already alive that the checks of task 5 asked
-/// for (no emission, the reference forces; the library's), for the report's replays; empty
-/// without the library, or for a request it cannot answer.
+/// for (no emission, the reference forces; the library's, library/steppers.h), for the report's
+/// replays; empty without the library, or for a request it cannot answer.
 std::optional<harness::ParticlesResult> referenceParticleRun(const harness::ParticleRunRequest& r);
 
 /// The mistake each failing task's answers match best, if any, in task order.

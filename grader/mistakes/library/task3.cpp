@@ -1,87 +1,20 @@
-// Task 3, time stepping: the reference symplectic Euler step with the reference forces (the
-// checks of task 3 ask the probe for them too: referenceForces), advance(T, n) as n steps of
-// T / n, and its mistakes part by part: the step's parts (resetting the forces, a spring's two
-// ends, the mass, the order of v and x, the pins, the substeps' length) each in the physics' form
-// or a wrong one, with one or two parts wrong. Requests run on the student's own forces or with
-// the implicit step cannot be modelled: they are skipped.
+// Task 3, time stepping: the reference's symplectic Euler step (steppers.h, with the reference
+// forces, which the checks of task 3 ask the probe for too: referenceForces), and its mistakes
+// part by part: the step's parts (resetting the forces, a spring's two ends, the mass, the order
+// of v and x, the pins, the substeps' length) each in the physics' form or a wrong one, with one
+// or two parts wrong. Requests run on the student's own forces or with the implicit step cannot
+// be modelled: they are skipped.
 #include <optional>
 
 #include "mistakes/library/compare.h"
 #include "mistakes/library/models.h"
+#include "mistakes/library/steppers.h"
 
 namespace a6::grader::mistakes {
 namespace {
 
-#include "reference_models.inc"
-
 using harness::SimulateRequest;
 using harness::SimulateResult;
-
-// One form of the step, part by part; the default is the physics'.
-struct StepForm {
-  bool forcesKept = false;      ///< p.f += externalForce(p): the last step's forces never reset
-  int springEnds = 0;           ///< 0: p2 +f, p1 -f; 1: both +f; 2: p2 -f, p1 +f
-  bool noMassDivision = false;  ///< v += f dt
-  bool positionFirst = false;   ///< x += v dt before v += f/m dt
-  int pins = 0;                 ///< 0: skipped; 1: moved like the others; 2: only x kept; 3: only v
-  bool substepFullDt = false;   ///< advance's substeps each take the whole frameDt
-};
-
-struct System {
-  std::vector<Particle> particles;
-  std::vector<SpringData> springs;
-  Environment env;
-};
-
-// 1. each particle's external force, 2. every spring's force on both ends.
-void accumulateForces(System& s, const StepForm& form) {
-  for (Particle& p : s.particles) {
-    const Vec2 f = referenceExternalForce(p, s.env);
-    p.f = form.forcesKept ? Vec2(p.f + f) : f;
-  }
-  for (const SpringData& d : s.springs) {
-    Particle& p1 = s.particles[static_cast<std::size_t>(d.i)];
-    Particle& p2 = s.particles[static_cast<std::size_t>(d.j)];
-    const Spring spring{&p1, &p2, d.restLength, d.ks, d.kd, d.type};
-    const Vec2 f = referenceSpringForce(spring);
-    p2.f += form.springEnds == 2 ? Vec2(-f) : f;
-    p1.f += form.springEnds == 0 ? Vec2(-f) : f;
-  }
-}
-
-// 3. velocity, then position with the new velocity (or the form's order, division and pins).
-void step(System& s, double dt, const StepForm& form) {
-  accumulateForces(s, form);
-  for (Particle& p : s.particles) {
-    if (p.pinned && form.pins == 0) continue;
-    const bool moveV = !p.pinned || form.pins != 3, moveX = !p.pinned || form.pins != 2;
-    const Vec2 dv = (form.noMassDivision ? p.f : Vec2(p.f / p.m)) * dt;
-    if (form.positionFirst && moveX) p.x += p.v * dt;
-    if (moveV) p.v += dv;
-    if (!form.positionFirst && moveX) p.x += p.v * dt;
-  }
-}
-
-std::optional<SimulateResult> simulate(const SimulateRequest& r, const StepForm& form) {
-  if (!r.referenceForces || r.implicit) return std::nullopt;
-  for (const SpringData& d : r.springs) {
-    const int n = static_cast<int>(r.particles.size());
-    if (d.i < 0 || d.j < 0 || d.i >= n || d.j >= n) return std::nullopt;
-  }
-  System s{r.particles, r.springs, r.env};
-  SimulateResult out;
-  const int every = std::max(1, r.recordEvery);
-  const int substeps = r.stepOnly ? 1 : std::max(1, r.substeps);
-  const double dt = r.stepOnly || form.substepFullDt ? r.frameDt : r.frameDt / substeps;
-  for (int frame = 1; frame <= r.frames; ++frame) {
-    for (int k = 0; k < substeps; ++k) step(s, dt, form);
-    if (frame % every == 0 || frame == r.frames) {
-      out.recordedFrames.push_back(frame);
-      out.states.push_back(s.particles);
-    }
-  }
-  return out;
-}
 
 // One wrong form of one part of the step: its key (the model's id; a one-part form's is the
 // wrong version's it was first written from, tests/wrong/t3_<key>), what it does, and the form.
@@ -160,11 +93,3 @@ std::vector<MistakeModel> task3Mistakes() {
 }
 
 }  // namespace a6::grader::mistakes
-
-namespace a6::grader {
-
-std::optional<harness::SimulateResult> referenceSimulation(const harness::SimulateRequest& r) {
-  return mistakes::simulate(r, mistakes::StepForm{});
-}
-
-}  // namespace a6::grader

@@ -1,7 +1,7 @@
 // Task 5, the particle system. The update of particles already alive (no emission: rate 0) is
-// deterministic: the reference (forces with the reference model, symplectic Euler, cooling
-// towards the air, ageing, removal at age >= lifetime) and the mistakes of tests/wrong/t5_* that
-// change it answer ParticleRunRequest as those wrong versions do. The emitter's mistakes draw
+// deterministic: the reference (steppers.h: forces with the reference model, symplectic Euler,
+// cooling towards the air, ageing, removal at age >= lifetime) and the mistakes of tests/wrong/t5_*
+// that change it answer ParticleRunRequest as those wrong versions do. The emitter's mistakes draw
 // at random: they are recognised by what the emitted sample shows (every velocity the same; a
 // disc crowded at its centre), beside what the reference's sample shows.
 #include <algorithm>
@@ -9,44 +9,13 @@
 
 #include "mistakes/library/compare.h"
 #include "mistakes/library/models.h"
+#include "mistakes/library/steppers.h"
 
 namespace a6::grader::mistakes {
 namespace {
 
-#include "reference_models.inc"
-
 using harness::ParticleRunRequest;
 using harness::ParticlesResult;
-
-enum class Flaw { None, PositionFirst, CoolingWrongSign, NoRemoval, RemovalLate };
-
-void update(std::vector<Particle>& particles, const ParticleRunRequest& r, Flaw flaw) {
-  const double dt = r.dt, cooling = flaw == Flaw::CoolingWrongSign ? -r.coolingRate : r.coolingRate;
-  for (Particle& p : particles) {
-    p.f = referenceExternalForce(p, r.env);
-    if (flaw == Flaw::PositionFirst) p.x += p.v * dt;
-    p.v += p.f / p.m * dt;
-    if (flaw != Flaw::PositionFirst) p.x += p.v * dt;
-    p.temperature -= cooling * (p.temperature - r.env.airTemperature) * dt;
-    p.age += dt;
-  }
-  if (flaw == Flaw::NoRemoval) return;
-  const auto dead = [flaw](const Particle& p) {
-    return flaw == Flaw::RemovalLate ? p.age > p.lifetime : p.age >= p.lifetime;
-  };
-  particles.erase(std::remove_if(particles.begin(), particles.end(), dead), particles.end());
-}
-
-std::optional<ParticlesResult> run(const ParticleRunRequest& r, Flaw flaw) {
-  if (!r.referenceForces || r.emitter.rate != 0 || r.steps > 100000) return std::nullopt;
-  ParticlesResult out;
-  out.particles = r.initial;
-  for (int k = 0; k < r.steps; ++k) {
-    update(out.particles, r, flaw);
-    out.counts.push_back(static_cast<int>(out.particles.size()));
-  }
-  return out;
-}
 
 // The counts after every step, and the particles alive at the end in the same order (removal
 // keeps the order of the others).
@@ -62,12 +31,12 @@ bool same(const ParticlesResult& a, const ParticlesResult& b) {
   return true;
 }
 
-MistakeModel updateModel(const char* id, Flaw flaw, const char* text) {
+MistakeModel updateModel(const char* id, ParticleFlaw flaw, const char* text) {
   auto judge = [flaw](const Transcript& t) {
     return judgeEach(
         t.of<harness::ParticleRunRequest>(),
-        [](const ParticleRunRequest& r) { return run(r, Flaw::None); },
-        [flaw](const ParticleRunRequest& r) { return run(r, flaw); }, same);
+        [](const ParticleRunRequest& r) { return runParticles(r, ParticleFlaw::None); },
+        [flaw](const ParticleRunRequest& r) { return runParticles(r, flaw); }, same);
   };
   return MistakeModel{id, 5, text, judge};
 }
@@ -124,16 +93,16 @@ MistakeModel discModel() {
 
 std::vector<MistakeModel> task5Mistakes() {
   return {
-      updateModel("t5_position_before_velocity", Flaw::PositionFirst,
+      updateModel("t5_position_before_velocity", ParticleFlaw::PositionFirst,
                   "Your update behaves exactly like explicit Euler: the position moves before "
                   "the velocity is updated; update v first, then x with the new velocity."),
-      updateModel("t5_cooling_wrong_sign", Flaw::CoolingWrongSign,
+      updateModel("t5_cooling_wrong_sign", ParticleFlaw::CoolingWrongSign,
                   "Your update behaves exactly like one whose cooling has the wrong sign: "
                   "particles move away from the air's temperature; T -= k_c (T - T_air) dt."),
-      updateModel("t5_no_removal", Flaw::NoRemoval,
+      updateModel("t5_no_removal", ParticleFlaw::NoRemoval,
                   "Your update behaves exactly like one that ages particles but never removes "
                   "them: erase every particle whose age has reached its lifetime."),
-      updateModel("t5_removal_off_by_one", Flaw::RemovalLate,
+      updateModel("t5_removal_off_by_one", ParticleFlaw::RemovalLate,
                   "Your update behaves exactly like one that removes a particle only when age > "
                   "lifetime, one step late: remove it once age >= lifetime."),
       spreadModel(),
@@ -142,11 +111,3 @@ std::vector<MistakeModel> task5Mistakes() {
 }
 
 }  // namespace a6::grader::mistakes
-
-namespace a6::grader {
-
-std::optional<harness::ParticlesResult> referenceParticleRun(const harness::ParticleRunRequest& r) {
-  return mistakes::run(r, mistakes::Flaw::None);
-}
-
-}  // namespace a6::grader
