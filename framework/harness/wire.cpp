@@ -304,12 +304,6 @@ bool startResult(const json& j, Result& r) {
   return r.fault != harness::Fault::None && j.size() == (hasFault ? 2u : 1u);
 }
 
-// Runs a decoder, naming the result type in its error.
-template <typename Decode>
-auto decodeAs(const char* what, Decode&& decode) -> decltype(decode()) {
-  return within(what, decode);
-}
-
 }  // namespace
 
 // Doubles ----------------------------------------------------------------------------------------
@@ -364,8 +358,8 @@ json encodeOutcomeAnd(const Result& r) {
   return out;
 }
 template <typename Result>
-Result decodeOutcomeAnd(const char* what, const json& j) {
-  return decodeAs(what, [&] {
+Result decodeOutcomeAnd(const std::string& what, const json& j) {
+  return within(what, [&] {
     Result r;
     if (startResult(j, r)) return r;
     Reader reader{j};
@@ -398,7 +392,7 @@ template <std::size_t K>
 harness::Answer decodeAnswerOf(const json& j) {
   using Result = typename KindAt<K>::Result;
   const std::string what = std::string("the answer to ") + KindAt<K>::kKind;
-  return harness::Answer(std::in_place_index<K>, decodeOutcomeAnd<Result>(what.c_str(), j));
+  return harness::Answer(std::in_place_index<K>, decodeOutcomeAnd<Result>(what, j));
 }
 template <std::size_t... K>
 harness::Answer decodeAnswerAt(std::size_t kind, const json& j, std::index_sequence<K...>) {
