@@ -39,6 +39,8 @@ function(a6_student_set name dir)
       target_link_libraries(${target} PUBLIC a6_api)
       target_compile_options(${target} PRIVATE ${A6_WARNINGS})
       target_precompile_headers(${target} REUSE_FROM a6_student_pch)
+      # The checked code at -O2 wherever its set is defined (tests/ builds its own code at -O1).
+      target_compile_options(${target} PRIVATE $<$<CONFIG:RelWithDebInfo>:-O2>)
       if(ARG_STARTER)
         target_compile_options(${target} PRIVATE -Wno-unused-parameter)
       endif()

@@ -7,7 +7,7 @@
 #
 #   scripts/try-platform.sh PLATFORM [JOB...]
 #
-# PLATFORM: debian13 (trixie), ubuntu2204 (jammy: Gradescope's default image, WSL's Ubuntu) or
+# PLATFORM: debian12 (bookworm), debian13 (trixie), ubuntu2204 (jammy: Gradescope's default image, WSL's Ubuntu) or
 # ubuntu2404 (noble). The root is /var/tmp/a6-PLATFORM (kept for a re-run; $A6_TRY_ROOT replaces
 # it), and each job's whole log is beside it (/var/tmp/a6-PLATFORM.JOB.log).
 # JOB (default: the platform's own list, below):
@@ -17,7 +17,9 @@
 #               it: setup.sh as root in /autograder/source (it installs its packages with apt),
 #               then run_autograder on the solution and on the starter; they must get 113 and 0
 #   student     the student release (made here by grader/release/export-student.sh) as a student
-#               runs it: its scripts/install-deps.sh, scripts/check.sh and scripts/test.sh
+#               runs it: its scripts/install-deps.sh as root, then, as a user of their own (not
+#               root) in a folder of their 0700 home, scripts/check.sh twice (each timed) and
+#               scripts/test.sh; check.sh may say at most one line about the grader's sandbox
 #
 # Needs root, debootstrap (apt-get install debootstrap), gpg, and the platform's archive over the
 # network (deb.debian.org, archive.ubuntu.com). Exit status: 0 when every job did what it must.
@@ -29,11 +31,12 @@ usage() { sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 platform=$1
 shift
 case "$platform" in
+  debian12) suite=bookworm mirror=${A6_DEBIAN_MIRROR:-http://deb.debian.org/debian} default_jobs="main student" ;;
   debian13) suite=trixie mirror=${A6_DEBIAN_MIRROR:-http://deb.debian.org/debian} default_jobs="main test" ;;
   ubuntu2204) suite=jammy mirror=${A6_UBUNTU_MIRROR:-http://archive.ubuntu.com/ubuntu} default_jobs="gradescope student" ;;
   ubuntu2404) suite=noble mirror=${A6_UBUNTU_MIRROR:-http://archive.ubuntu.com/ubuntu} default_jobs="gradescope main student" ;;
   -h | --help) usage ;;
-  *) say "unknown platform $platform (debian13, ubuntu2204, ubuntu2404)"; exit 2 ;;
+  *) say "unknown platform $platform (debian12, debian13, ubuntu2204, ubuntu2404)"; exit 2 ;;
 esac
 jobs="${*:-$default_jobs}"
 target="${A6_TRY_ROOT:-/var/tmp/a6-$platform}"
@@ -168,11 +171,21 @@ for job in $jobs; do
       [ -x "$repo/build/grader/a6_grade" ] || { say "student: build a6_grade here first (cmake --build build --target a6_grade)"; exit 1; }
       A6_GRADE="$repo/build/grader/a6_grade" bash "$repo/grader/release/export-student.sh" "$stage/release" \
         >"$stage/export.log" 2>&1 || { tail "$stage/export.log"; say "the release could not be exported"; exit 1; }
-      rm -rf "$target/home/student/a6" && mkdir -p "$target/home/student" && cp -a "$stage/release" "$target/home/student/a6"
-      # The starter fails its checks: check.sh and test.sh must run to the end and say so.
+      # The student's own user and home (0700), the release unzipped there by them.
+      inside 'id student >/dev/null 2>&1 || useradd -m -s /bin/bash student' ||
+        { say "no user could be made inside"; exit 1; }
+      rm -rf "$target/home/student/a6" && cp -a "$stage/release" "$target/home/student/a6"
+      inside 'chown -R student:student /home/student && chmod 0700 /home/student'
+      # install-deps as root (the README's sudo step); then everything as the student. The starter
+      # fails its checks: check.sh and test.sh must run to the end and say so.
       lines=12 run_job student-deps 'cd /home/student/a6 && scripts/install-deps.sh'
-      lines=12 run_job student-check 'cd /home/student/a6 && scripts/check.sh' any
-      lines=12 run_job student-test 'cd /home/student/a6 && scripts/test.sh' any
+      as_student='runuser -u student -- env -i HOME=/home/student PATH=/usr/bin:/bin LANG=C.UTF-8'
+      lines=12 run_job student-check "cd /home/student/a6 && $as_student scripts/check.sh" any
+      lines=3 run_job student-check-again "cd /home/student/a6 && $as_student scripts/check.sh" any
+      lines=12 run_job student-test "cd /home/student/a6 && $as_student scripts/test.sh" any
+      sandbox_lines=$(grep -ci 'sandbox' "$target.student-check.log")
+      say "student: check.sh's lines about the sandbox: $sandbox_lines"
+      [ "$sandbox_lines" -le 1 ] || { say "FAILED: more than one line about the sandbox"; failures=$((failures + 1)); }
       for part in check test; do
         grep -q 'Task 1' "$target.student-$part.log" ||
           { say "FAILED: student $part: no summary by task"; failures=$((failures + 1)); }
