@@ -425,8 +425,11 @@ struct ProbeClient::Impl {
 
   // Why the probe stopped answering: it died (how, and its last words), or it closed fd 4.
   Outcome crashReport() {
-    // Give a dying probe a moment to finish dying, so its signal is what we report.
-    const auto until = Clock::now() + std::chrono::milliseconds(300);
+    // Give a dying probe time to finish dying, so its signal is what we report: a dying probe
+    // returns at once, and only one that closed its pipe and lives on waits the whole 2 s. On a
+    // loaded machine an exit can take longer than 300 ms to be seen (CI beside 4 CPU hogs: a
+    // probe that had exited was reported as having closed its pipe).
+    const auto until = Clock::now() + std::chrono::seconds(2);
     bool alive = process->alive();
     while (alive && Clock::now() < until) {
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
