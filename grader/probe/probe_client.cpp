@@ -429,12 +429,7 @@ struct ProbeClient::Impl {
     // returns at once, and only one that closed its pipe and lives on waits the whole 2 s. On a
     // loaded machine an exit can take longer than 300 ms to be seen (CI beside 4 CPU hogs: a
     // probe that had exited was reported as having closed its pipe).
-    const auto until = Clock::now() + std::chrono::seconds(2);
-    bool alive = process->alive();
-    while (alive && Clock::now() < until) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-      alive = process->alive();
-    }
+    const bool alive = aliveAfter(std::chrono::seconds(2));
     const Exit exit = shutdown(alive ? "closed its answer pipe" : "crashed");
     // SIGKILL is sent by the grader only at a time limit (not this path), and by the CPU limit
     // once it is used up: otherwise the machine ended it.
@@ -500,11 +495,18 @@ struct ProbeClient::Impl {
   // A probe that ended just after it started: its crash report, once it is dead (300 ms at
   // most); no fault while it still runs.
   Outcome endedAtStart() {
-    const auto until = Clock::now() + std::chrono::milliseconds(300);
-    while (process->alive() && Clock::now() < until) {
+    return aliveAfter(std::chrono::milliseconds(300)) ? Outcome{} : crashReport();
+  }
+
+  // Whether the probe still lives after `grace`: returns as soon as it is seen dead.
+  bool aliveAfter(Clock::duration grace) {
+    const auto until = Clock::now() + grace;
+    bool alive = process->alive();
+    while (alive && Clock::now() < until) {
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      alive = process->alive();
     }
-    return process->alive() ? Outcome{} : crashReport();
+    return alive;
   }
 
   // A probe just started: it must answer a request that runs no student code, and then show,
