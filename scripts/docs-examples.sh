@@ -135,7 +135,7 @@ example_failure_message() {
 # What changes from one run to the next, masked for the comparison; and 12.0 read as 12 (jq 1.7,
 # Debian 13's, keeps a number as written; jq 1.6 shortens it).
 mask() {
-  sed -E -e 's/\b([0-9]+)\.0\b/\1/g' -e 's/[0-9]+(\.[0-9]+)? s\b/N s/g' -e 's/"(execution_time|seconds|grader_peak_rss_mib)": [0-9.]+/"\1": N/g' \
+  sed -E -e 's/\b([0-9]+)\.0\b/\1/g' -e 's/[0-9]+(\.[0-9]+)? s\b/N s/g' -e 's/"(execution_time|seconds|grader_peak_rss_mib|build|checks)": [0-9.]+/"\1": N/g' \
     -e 's/,[0-9]+(\.[0-9]+)?$/,N/' -e 's/,([a-z ]+),[0-9]+(\.[0-9]+)?,([a-z0-9_ ]*)$/,\1,N,\3/' -e 's/\b([0-9]+m)?[0-9]+s\b|\b[0-9]+h[0-9]+m\b/N/g'
 }
 

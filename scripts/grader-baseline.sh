@@ -29,7 +29,8 @@ for c in "${cases[@]}"; do
     >"$work/log" 2>&1
   status=$?
   if [ -f "$work/r/results.json" ]; then
-    jq --arg status "$status" 'del(.execution_time, .extra_data.seconds, .extra_data.grader_peak_rss_mib)
+    jq --arg status "$status" 'del(.execution_time, .extra_data.seconds, .extra_data.seconds_by_stage,
+      .extra_data.grader_peak_rss_mib)
       | .a6_grade_exit_status = $status' "$work/r/results.json" |
       sed -E "s|$work|WORK|g; s|/tmp/[A-Za-z0-9_.-]+|TMP|g; s|ran out of time: [0-9.]+ s|ran out of time: N s|g" \
         >"$out/$name.json"

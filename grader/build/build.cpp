@@ -445,12 +445,12 @@ class ProbeBuilder {
   }
 
   // Runs the compiler or linker in `dir`, seeing `view`, within what is left of the budget (a
-  // link gets at least 10 s); the sandbox's notes join the build's, once each.
+  // link gets at least kLinkAllowance); the sandbox's notes join the build's, once each.
   Exit runInBudget(const fs::path& dir, const SandboxView& view, std::vector<std::string> argv) {
     const bool link = dir.filename() == "link";
     Limits limits = compileLimits_;
     const double left = std::chrono::duration<double>(end_ - Clock::now()).count();
-    limits.wallSeconds = std::max(link ? 10.0 : 1.0, std::min(limits.wallSeconds, left));
+    limits.wallSeconds = std::max(link ? kLinkAllowance : 1.0, std::min(limits.wallSeconds, left));
     Exit e = runTool(kit_, view, dir, std::move(argv), limits);
     for (const std::string& n : e.notes) addNote(n);
     return e;

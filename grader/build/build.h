@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "grading/budgets.h"
 #include "intake/intake.h"
 #include "sandbox/sandbox.h"
 
@@ -93,11 +94,6 @@ struct Build {
 /// Limits for one compile or link: 60 s wall and CPU, 512 MiB address space, 64 MiB files,
 /// a few processes (the driver runs cc1plus, as, collect2, ld).
 Limits defaultCompileLimits();
-
-/// The whole build of one submission may take this long (s): every compile gets what is left
-/// of it, up to its own limit; a file not compiled when it is used up is graded with the
-/// starter's stub. The link gets at least 10 s more.
-constexpr double kDefaultBuildBudget = 150;
 
 /// Compiles each file of `intake` in `workDir` (sandboxed, the grader's secrets hidden, only
 /// /dev/null, /dev/zero and /dev/urandom among the devices; `jobs` files at a time) and links

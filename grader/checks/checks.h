@@ -19,15 +19,11 @@
 #include "checks/outcome.h"
 #include "checks/scene_run.h"
 #include "checks/transcript.h"
+#include "grading/budgets.h"
 #include "harness/student_code.h"
 #include "scoring/rubric.h"
 
 namespace a6::grader {
-
-/// The time the student's code may take over all checks together (--time-budget), s: well
-/// within Gradescope's default of 10 minutes for the whole run, which would otherwise end it
-/// with a 0.
-constexpr double kDefaultTimeBudget = 420;
 
 /// Registers every check with GoogleTest, its flags pinned (nothing from the environment, such
 /// as GTEST_FILTER, changes what runs): `seed` draws the random inputs, `filter` (a GoogleTest

@@ -96,8 +96,8 @@ class Grading {
     prepareWork();
     if (const std::optional<int> stopped = intake()) return *stopped;
     if (const std::optional<int> stopped = registerChecks()) return *stopped;
-    build();
-    check();
+    report_.buildSeconds = secondsOf([this] { build(); });
+    report_.checksSeconds = secondsOf([this] { check(); });
     endWhatWasLeftRunning();
     nameMistakes();
     buildReplays();
@@ -105,6 +105,12 @@ class Grading {
   }
 
  private:
+  template <typename Stage>
+  static double secondsOf(Stage stage) {
+    const Clock::time_point start = Clock::now();
+    stage();
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  }
   void fail(const std::string& what) {
     report_.errors.push_back(what);
     graderFailed_ = true;
@@ -129,7 +135,7 @@ class Grading {
     report_.linked = true;
     prepareWork();
     if (const std::optional<int> stopped = registerChecks()) return *stopped;
-    check();
+    report_.checksSeconds = secondsOf([this] { check(); });
     nameMistakes();
     buildReplays();
     return finish();

@@ -275,6 +275,8 @@ Json extraData(const GradeReport& report) {
   extra["max_score"] = report.maxScore;
   extra["extra_credit"] = report.extraCredit;
   extra["seconds"] = roundPoints(report.seconds);
+  extra["seconds_by_stage"] = {{"build", roundPoints(report.buildSeconds)},
+                               {"checks", roundPoints(report.checksSeconds)}};
   extra["grader_peak_rss_mib"] = roundPoints(report.peakRssMiB);
   Json outcomes = Json::object();
   for (const TestOutcome& t : report.tests) outcomes[t.name] = t.passed ? "passed" : "failed";

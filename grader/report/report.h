@@ -35,12 +35,14 @@ struct GradeReport {
   std::vector<NamedMistake> mistakes;
   /// Each imaged scene's run beside the reference's (grader/replay/): the report's players.
   std::vector<ReplayView> replays;
-  double score = 0;        ///< regular points plus extra credit
-  double maxScore = 0;     ///< the rubric's total (extra credit not included)
-  double extraCredit = 0;  ///< the part of `score` earned by extra-credit items
-  double seconds = 0;
-  double peakRssMiB = 0;              ///< the grader's own peak memory (not its children's)
-  std::string probeOutput;            ///< capped; shown to instructors only
+  double score = 0;          ///< regular points plus extra credit
+  double maxScore = 0;       ///< the rubric's total (extra credit not included)
+  double extraCredit = 0;    ///< the part of `score` earned by extra-credit items
+  double seconds = 0;        ///< the whole grading's wall time
+  double buildSeconds = 0;   ///< the build stage's (within its budget, grading/budgets.h)
+  double checksSeconds = 0;  ///< the checks stage's (within --time-budget and what ends a check)
+  double peakRssMiB = 0;     ///< the grader's own peak memory (not its children's)
+  std::string probeOutput;   ///< capped; shown to instructors only
   std::vector<std::string> warnings;  ///< rubric problems found while scoring
   std::vector<std::string> notes;     ///< for instructors: sandbox protections that could not
                                       ///< be applied (not root, ...), and the like

@@ -10,8 +10,10 @@
 //     other task keeps its full points (from the rubric's points, for the physics checks), and
 //     the total is never more than the rubric's points of the tasks it does not break;
 //   - a clear reason, in the items of the tasks it breaks (or in the report);
-//   - and a6_grade must exit with 0 within a time bound, having written a valid results.json
-//     that is its own (not one the submission planted).
+//   - and a6_grade must exit with 0, having written a valid results.json that is its own (not one
+//     the submission planted), within the wall time the grader promises (maxGradingSeconds: its
+//     budgets and its own work) and within the case's bound on CPU time (a bound that other work
+//     on the machine hardly moves, so that a grader gone slow fails here, not a loaded machine).
 //
 // Each case is its own ctest entry (--gtest_filter), so they run in parallel. The table of cases
 // and the scores they get is in docs/instructor.md, "Hostile submissions".
@@ -36,6 +38,7 @@
 #include <vector>
 
 #include "common/fnv1a.h"
+#include "grading/budgets.h"
 #include "poisoner.h"
 #include "run_command.h"
 #include "scoring/rubric.h"
@@ -70,8 +73,9 @@ fs::path caseDir(const std::string& name) {
 struct Graded {
   int status = -1;
   double seconds = 0;
-  std::string output;  // stdout and stderr
-  json results;        // results.json (null when missing or invalid)
+  double cpuSeconds = 0;  // a6_grade's and everything it waited for
+  std::string output;     // stdout and stderr
+  json results;           // results.json (null when missing or invalid)
   fs::path out;
 };
 
@@ -84,6 +88,7 @@ Graded grade(const fs::path& submission, const fs::path& out, const fs::path& ru
   g.out = out;
   g.status = run.status;
   g.seconds = run.seconds;
+  g.cpuSeconds = run.cpuSeconds;
   g.output = run.output;
   g.results = json::parse(readAll(out / "results.json"), nullptr, false);
   if (g.results.is_discarded()) g.results = nullptr;
@@ -152,16 +157,20 @@ bool physicsOnly(const RubricItem& item) {
 
 std::string describe(const Graded& g) {
   std::ostringstream out;
-  out << "a6_grade exited with " << g.status << " after " << g.seconds << " s; it printed:\n"
+  out << "a6_grade exited with " << g.status << " after " << g.seconds << " s (" << g.cpuSeconds
+      << " s of CPU); it printed:\n"
       << g.output.substr(0, 4000);
   if (g.results.is_object()) out << "\nresults.json output:\n" << g.results.value("output", "");
   return out.str();
 }
 
-// Valid results.json of a completed run, written by the grader.
-void expectValidResults(const Graded& g, double maxSeconds) {
+// Valid results.json of a completed run, written by the grader within the wall time it promises
+// for `timeBudget` and within `maxCpuSeconds` of CPU.
+void expectValidResults(const Graded& g, double maxCpuSeconds,
+                        double timeBudget = a6::grader::kDefaultTimeBudget) {
   EXPECT_EQ(g.status, 0) << describe(g);
-  EXPECT_LT(g.seconds, maxSeconds) << describe(g);
+  EXPECT_LT(g.seconds, a6::grader::maxGradingSeconds(timeBudget)) << describe(g);
+  EXPECT_LT(g.cpuSeconds, maxCpuSeconds) << describe(g);
   ASSERT_TRUE(g.results.is_object()) << "no valid results.json\n" << describe(g);
   ASSERT_TRUE(g.results.contains("score") && g.results["score"].is_number()) << g.results;
   ASSERT_TRUE(g.results.contains("tests") && g.results["tests"].is_array()) << g.results;
@@ -257,11 +266,11 @@ void expectReason(const Graded& g, const Rubric& rubric, const std::set<int>& br
 }
 
 struct Case {
-  Case(std::set<int> brokenTasks, std::string why, double seconds = 120, double limit = 0,
+  Case(std::set<int> brokenTasks, std::string why, double cpuSeconds = 120, double limit = 0,
        std::vector<std::string> left = {})
       : broken(std::move(brokenTasks)),
         reason(std::move(why)),
-        maxSeconds(seconds),
+        maxCpuSeconds(cpuSeconds),
         timeLimit(limit),
         omit(std::move(left)) {}
   /// The broken files crash, throw, loop or return NaN rather than return what a stub does.
@@ -271,7 +280,7 @@ struct Case {
   }
   std::set<int> broken;           // tasks that honestly earn what the starter's code earns
   std::string reason;             // what the broken tasks' items (or the report) must say
-  double maxSeconds;              // a6_grade must be done within this (for the case, not its twin)
+  double maxCpuSeconds;           // a6_grade's CPU time stays under this (the case, not its twin)
   double timeLimit;               // > 0: every rubric time limit cut to this, s
   std::vector<std::string> omit;  // task files left out of the submission
   bool exact = true;              // every item scores exactly as the twin's (see crashes())
@@ -293,10 +302,10 @@ Outcome check(const std::string& name, const fs::path& dir, const fs::path& subm
   o.rubric = a6::grader::loadRubric(rubricFile);
   EXPECT_TRUE(o.rubric.ok()) << o.rubric.error;
   o.graded = grade(submission, dir / "out", rubricFile);
-  std::printf("[ hostile  ] %s: score %s in %.1f s\n", name.c_str(),
+  std::printf("[ hostile  ] %s: score %s in %.1f s (%.1f s of CPU)\n", name.c_str(),
               o.graded.results.is_object() ? o.graded.results["score"].dump().c_str() : "none",
-              o.graded.seconds);
-  expectValidResults(o.graded, c.maxSeconds);
+              o.graded.seconds, o.graded.cpuSeconds);
+  expectValidResults(o.graded, c.maxCpuSeconds);
   if (::testing::Test::HasFatalFailure()) return o;
   Graded twin;
   if (!c.broken.empty()) {
@@ -483,14 +492,18 @@ TEST(Hostile, EndlessLoop) {
 
 // Each allowance is counted once: a step that asks for forces without end, graded with a time
 // budget of 30 s, takes the build, those 30 s and the grader's own work, not the 142 s it took when
-// the force allowance was handed on as the next request's limit and added again.
+// the force allowance was handed on as the next request's limit and added again. The checks
+// stage ends the budget's 30 s after it starts, however loaded the machine (the budget is a
+// deadline), plus the refusals of the checks left: its own seconds, in results.json, show it.
 TEST(Hostile, AsksForForcesWithoutEnd) {
   const fs::path dir = caseDir("endless_forces");
   const fs::path submission = stage(dir / "submission", "endless_forces");
   const Graded g = grade(submission, dir / "out", rubricFor(dir), "--time-budget 30");
-  // The build (one file compiled, one link), the 30 s, and the grader's own work.
-  expectValidResults(g, 30 + 90);
-  std::cout << "[ timing ] endless forces: " << g.seconds << " s in all, --time-budget 30\n";
+  expectValidResults(g, 60, 30);
+  const double checks = g.results["extra_data"]["seconds_by_stage"].value("checks", 1e9);
+  EXPECT_LT(checks, 30 + 10) << "the checks stage outlived the time budget\n" << describe(g);
+  std::cout << "[ timing ] endless forces: " << g.seconds << " s in all, " << checks
+            << " s of checks, " << g.cpuSeconds << " s of CPU, --time-budget 30\n";
   int task3Failed = 0;
   for (const auto& [check, outcome] : g.results["extra_data"]["tests"].items()) {
     if (check.rfind("Task3", 0) == 0 && outcome == "failed") ++task3Failed;
