@@ -164,7 +164,6 @@ class Grading {
 bool Grading::begin() {
   report_.submission = options_.submission;
   report_.rubricTitle = rubric_.title;
-  report_.rubricFile = rubric_.file;
   report_.maxScore = rubric_.ok() ? rubric_.totalPoints : 0;
   out_ = fs::absolute(options_.out);
   results_ = out_ / "results.json";

@@ -84,7 +84,6 @@ ItemResult itemOf(const Json& t) {
   item.number = stringAt(t, "number");
   item.score = numberAt(t, "score");
   item.max = numberAt(t, "max_score");
-  item.visibility = stringAt(t, "visibility");
   item.passed = stringAt(t, "status") == "passed";
   if (t.contains("tags") && t["tags"].is_array()) {
     for (const Json& tag : t["tags"]) {

@@ -25,9 +25,8 @@ struct ItemResult {
   bool extraCredit = false;
   bool passed = false;        ///< every check of it passed
   double score = 0, max = 0;  ///< max 0 for extra credit and for items without points
-  std::string visibility;
-  std::string mistake;      ///< the named mistake behind its failures (an id), or ""
-  std::string mistakeText;  ///< what the report told the student about it
+  std::string mistake;        ///< the named mistake behind its failures (an id), or ""
+  std::string mistakeText;    ///< what the report told the student about it
 };
 
 /// Counts of what went wrong while the code ran (results.json's extra_data.incidents).

@@ -11,11 +11,6 @@ namespace a6::grader {
 ProbePair::ProbePair(std::unique_ptr<ProbeClient> plain, std::unique_ptr<ProbeClient> models)
     : plain_(std::move(plain)), models_(std::move(models)) {}
 
-void ProbePair::setRequestTimeout(double seconds) {
-  plain_->setRequestTimeout(seconds);
-  models_->setRequestTimeout(seconds);
-}
-
 void ProbePair::startCheck(double limit, std::chrono::steady_clock::time_point hardEnd) {
   plain_->startCheck(limit, hardEnd);
   models_->startCheck(limit, hardEnd);

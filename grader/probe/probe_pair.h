@@ -24,7 +24,6 @@ class ProbePair final : public harness::StudentCode {
   ProbePair(std::unique_ptr<ProbeClient> plain, std::unique_ptr<ProbeClient> models);
 
   /// For both probes (see ProbeClient).
-  void setRequestTimeout(double seconds);
   void startCheck(double limit, std::chrono::steady_clock::time_point hardEnd);
   /// Each probe may be started `more` more times from now on (a new check's restarts).
   void allowMoreStarts(int more);

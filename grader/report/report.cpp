@@ -51,39 +51,32 @@ int taskOf(const std::string& file) {
   return 0;
 }
 
-std::string describeBuild(const TaskBuild& t) {
+// How a task file built: a keyword (results.json's extra_data.build) and a sentence (the output,
+// the report and the terminal).
+struct BuildWords {
+  const char* keyword;
+  const char* sentence;
+};
+
+BuildWords buildWords(const TaskBuild& t) {
   switch (t.status) {
     case TaskBuild::Status::Compiled:
-      return "compiled";
+      return {"compiled", "compiled"};
     case TaskBuild::Status::Missing:
-      return "missing from the submission: graded with the starter code";
+      return {"missing", "missing from the submission: graded with the starter code"};
     case TaskBuild::Status::CompileError:
-      return "did not compile: graded with the starter code";
+      return {"did not compile", "did not compile: graded with the starter code"};
     case TaskBuild::Status::TimedOut:
-      return "the compiler ran out of time: graded with the starter code";
+      return {"compiler timed out", "the compiler ran out of time: graded with the starter code"};
     case TaskBuild::Status::LinkError:
-      return "compiled, but could not be linked or started with the framework: graded with the "
-             "starter code";
+      return {"did not link or start",
+              "compiled, but could not be linked or started with the framework: graded with the "
+              "starter code"};
   }
-  return "?";
+  return {"?", "?"};
 }
 
-// The build status as one keyword (results.json's extra_data.build).
-const char* buildKeyword(const TaskBuild& t) {
-  switch (t.status) {
-    case TaskBuild::Status::Compiled:
-      return "compiled";
-    case TaskBuild::Status::Missing:
-      return "missing";
-    case TaskBuild::Status::CompileError:
-      return "did not compile";
-    case TaskBuild::Status::TimedOut:
-      return "compiler timed out";
-    case TaskBuild::Status::LinkError:
-      return "did not link or start";
-  }
-  return "?";
-}
+std::string describeBuild(const TaskBuild& t) { return buildWords(t).sentence; }
 
 std::string itemTitle(const ScoredItem& s) {
   const int total = s.passed + s.failed;
@@ -284,7 +277,7 @@ Json extraData(const GradeReport& report) {
   // How each task file built, for scripts (a6_batch's "build failed"): the same as the output's
   // "Build:" lines, as keywords.
   Json build = Json::object();
-  for (const TaskBuild& t : report.build.tasks) build[t.file] = buildKeyword(t);
+  for (const TaskBuild& t : report.build.tasks) build[t.file] = buildWords(t).keyword;
   extra["build"] = std::move(build);
   Json mistakes = Json::array();
   for (const NamedMistake& m : report.mistakes) {

@@ -22,7 +22,6 @@ struct GradeReport {
   std::string submission;  ///< what was graded (path as given)
   std::uint64_t seed = 0;  ///< the seed of the hidden checks, for a reproducible regrade
   std::string rubricTitle;
-  std::filesystem::path rubricFile;
   Intake intake;
   Build build;
   /// The files were linked into the grading program (GradeOptions::linked, the tests' in-process

@@ -11,9 +11,10 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <iterator>
-#include <sstream>
+#include <map>
+
+#include "sandbox/process.h"
 
 namespace a6::grader::sandboxing {
 
@@ -22,46 +23,19 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* limitName(int resource) {
-  switch (resource) {
-    case RLIMIT_CPU:
-      return "RLIMIT_CPU";
-    case RLIMIT_AS:
-      return "RLIMIT_AS";
-    case RLIMIT_FSIZE:
-      return "RLIMIT_FSIZE";
-    case RLIMIT_NOFILE:
-      return "RLIMIT_NOFILE";
-    case RLIMIT_NPROC:
-      return "RLIMIT_NPROC";
-    case RLIMIT_CORE:
-      return "RLIMIT_CORE";
-    default:
-      return "an rlimit";
-  }
+  static const std::map<int, const char*> kNames = {
+      {RLIMIT_CPU, "RLIMIT_CPU"},     {RLIMIT_AS, "RLIMIT_AS"},
+      {RLIMIT_FSIZE, "RLIMIT_FSIZE"}, {RLIMIT_NOFILE, "RLIMIT_NOFILE"},
+      {RLIMIT_NPROC, "RLIMIT_NPROC"}, {RLIMIT_CORE, "RLIMIT_CORE"}};
+  const auto it = kNames.find(resource);
+  return it == kNames.end() ? "an rlimit" : it->second;
 }
 
 // Tasks (threads) of a user, from /proc: RLIMIT_NPROC counts them all.
 long tasksOf(uid_t uid) {
   long total = 0;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator("/proc", ec)) {
-    const std::string name = entry.path().filename().string();
-    if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::ifstream status(entry.path() / "status");
-    std::string line;
-    bool mine = false;
-    long threads = 1;
-    while (std::getline(status, line)) {
-      if (line.compare(0, 4, "Uid:") == 0) {
-        std::istringstream in(line.substr(4));
-        long real = -1;
-        in >> real;
-        mine = real == static_cast<long>(uid);
-      } else if (line.compare(0, 8, "Threads:") == 0) {
-        threads = std::max(1L, std::atol(line.c_str() + 8));
-      }
-    }
-    if (mine) total += threads;
+  for (const process::Info& p : process::all()) {
+    if (p.realUid == uid) total += std::max(1, p.threads);
   }
   return total;
 }
@@ -260,14 +234,10 @@ void planLimits(const Limits& l, Plan& plan) {
   plan.limits.push_back({RLIMIT_NPROC, nproc, nproc});
 }
 
-// The descriptors the child keeps or receives, and the free range above them the child uses
+// The descriptors the child receives, and the free range above them the child uses
 // while moving them into place. Returns an error, or "".
 std::string planFds(const SandboxSpec& spec, Plan& plan) {
   int highest = 2;
-  for (int fd : spec.keepFds) {
-    plan.fds.push_back({fd, fd});
-    highest = std::max(highest, fd);
-  }
   for (const auto& [from, to] : spec.mapFds) {
     if (to < 3) return "mapFds: child fd " + std::to_string(to) + " is one of 0, 1, 2";
     plan.fds.push_back({from, to});

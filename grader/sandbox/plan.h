@@ -94,8 +94,7 @@ struct Plan {
   std::string keeperEndFd;    // its argument: endFd in digits
   std::vector<char*> keeperArgv;
   std::vector<MountOp> ops;
-  std::string workTmpfs;               // tmpfs options for the work dir ("": none)
-  std::vector<std::string> hidePaths;  // for messages, by op index
+  std::string workTmpfs;  // tmpfs options for the work dir ("": none)
   std::vector<Limit> limits;
   std::vector<std::pair<int, int>> fds;  // {source, target} besides 0/1/2
   int highBase = 0;

@@ -189,8 +189,6 @@ std::optional<Info> describe(pid_t pid) {
       info.seccompMode = std::atoi(rest.c_str());
     } else if (key == "Seccomp_filters") {
       info.seccompFilters = std::atoi(rest.c_str());
-    } else if (key == "NoNewPrivs") {
-      info.noNewPrivs = std::atoi(rest.c_str()) == 1;
     } else if (key == "NSpid") {
       std::istringstream in(rest);
       for (long pid; in >> pid;) info.nsPid = static_cast<pid_t>(pid);  // the innermost

@@ -54,7 +54,6 @@ struct Info {
   int threads = 0;          ///< Threads:
   int seccompMode = -1;     ///< Seccomp: 0 none, 1 strict, 2 filter; -1 not shown
   int seccompFilters = -1;  ///< Seccomp_filters: (Linux 5.9+); -1 not shown
-  bool noNewPrivs = false;  ///< NoNewPrivs: 1
   pid_t nsPid = 0;          ///< its pid in its own (innermost) pid namespace (NSpid:)
 };
 

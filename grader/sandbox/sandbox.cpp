@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <mutex>
 #include <thread>
 
@@ -264,34 +265,21 @@ int killAndReap(pid_t pid, double* cpuSeconds = nullptr) {
 }
 
 const char* signalText(int sig) {
-  switch (sig) {
-    case SIGSEGV:
-      return "SIGSEGV (segmentation fault)";
-    case SIGABRT:
-      return "SIGABRT (aborted: abort(), a failed assert or an uncaught exception)";
-    case SIGFPE:
-      return "SIGFPE (arithmetic exception, e.g. an integer division by zero)";
-    case SIGBUS:
-      return "SIGBUS (bus error: a bad memory access)";
-    case SIGILL:
-      return "SIGILL (illegal instruction)";
-    case SIGKILL:
-      return "SIGKILL (killed by the grader or the memory limit)";
-    case SIGXCPU:
-      return "SIGXCPU (CPU time limit exceeded)";
-    case SIGXFSZ:
-      return "SIGXFSZ (file size limit exceeded)";
-    case SIGSYS:
-      return "SIGSYS (a system call the sandbox refuses)";
-    case SIGPIPE:
-      return "SIGPIPE (broken pipe)";
-    case SIGTERM:
-      return "SIGTERM (terminated)";
-    case SIGTRAP:
-      return "SIGTRAP (trace/breakpoint trap)";
-    default:
-      return nullptr;
-  }
+  static const std::map<int, const char*> kTexts = {
+      {SIGSEGV, "SIGSEGV (segmentation fault)"},
+      {SIGABRT, "SIGABRT (aborted: abort(), a failed assert or an uncaught exception)"},
+      {SIGFPE, "SIGFPE (arithmetic exception, e.g. an integer division by zero)"},
+      {SIGBUS, "SIGBUS (bus error: a bad memory access)"},
+      {SIGILL, "SIGILL (illegal instruction)"},
+      {SIGKILL, "SIGKILL (killed by the grader or the memory limit)"},
+      {SIGXCPU, "SIGXCPU (CPU time limit exceeded)"},
+      {SIGXFSZ, "SIGXFSZ (file size limit exceeded)"},
+      {SIGSYS, "SIGSYS (a system call the sandbox refuses)"},
+      {SIGPIPE, "SIGPIPE (broken pipe)"},
+      {SIGTERM, "SIGTERM (terminated)"},
+      {SIGTRAP, "SIGTRAP (trace/breakpoint trap)"}};
+  const auto it = kTexts.find(sig);
+  return it == kTexts.end() ? nullptr : it->second;
 }
 
 }  // namespace

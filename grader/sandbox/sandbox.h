@@ -87,10 +87,9 @@ struct SandboxSpec {
                                   ///< false keeps what it wrote (the compiler's object)
   Limits limits;
   std::vector<std::string> env = {"PATH=/usr/bin:/bin"};  ///< the whole environment
-  std::vector<int> keepFds;                 ///< parent fds passed to the child at the same numbers
-  std::vector<std::pair<int, int>> mapFds;  ///< {parent fd, child fd}: passed at another number
-                                            ///< (the probe's pipes become its fds 3 and 4)
-  std::vector<std::filesystem::path> hide;  ///< paths the child must not be able to read
+  std::vector<std::pair<int, int>> mapFds;    ///< {parent fd, child fd}: passed at another number
+                                              ///< (the probe's pipes become its fds 3 and 4)
+  std::vector<std::filesystem::path> hide;    ///< paths the child must not be able to read
   std::vector<std::filesystem::path> reveal;  ///< paths inside hidden ones that stay visible
                                               ///< (the work dir and argv[0] always do)
   std::size_t workDirTmpfsBytes = 0;  ///< > 0: the work dir is a tmpfs of this size (as root,

@@ -41,7 +41,6 @@ void score(GradeReport& report, const Rubric& rubric) {
   report.score = report.extraCredit = 0;
   report.maxScore = rubric.totalPoints;
   report.rubricTitle = rubric.title;
-  report.rubricFile = rubric.file;
   for (const RubricItem& item : rubric.items)
     report.items.push_back(ScoredItem{item, 0, 0, 0, {}, {}});
 
