@@ -39,17 +39,15 @@ std::optional<double> numberOf(const Json& j) {
 
 }  // namespace
 
-// ---- outcomes ---------------------------------------------------------------------------------
-
 namespace {
 
-// extra_data.incidents as lines for a TA: "the code crashed 2 times", ...
 std::string oneNumber(double n) {
   std::ostringstream out;
   out << n;
   return out.str();
 }
 
+// extra_data.incidents as lines for a TA: "the code crashed 2 times", ...
 std::vector<std::string> flagsOf(const Json& incidents) {
   std::vector<std::string> flags;
   auto add = [&](const char* key, const std::string& what) {
@@ -215,8 +213,6 @@ std::optional<Outcome> outcomeOfMarker(const std::string& markerText,
   o.mistakes = mistakesOf(j.value("mistakes", Json::array()));
   return o;
 }
-
-// ---- the gradebook and the summary ------------------------------------------------------------
 
 std::string csvField(const std::string& text) {
   const bool quote = text.find_first_of(",\"\r\n") != std::string::npos ||

@@ -85,16 +85,13 @@ std::optional<CanvasName> parseCanvasName(const std::string& fileName);
 /// and sets `path`: `dir`, or the one archive the student uploaded. Returns "" or what failed.
 std::string stage(Submission& submission, const std::filesystem::path& dir);
 
-/// A file name made from any text: letters, digits, '.', '-', '_' (no leading '.'), never
-/// empty.
+/// A file name made from any text: letters, digits, '.', '-', '_' (no leading '.'), never empty.
 std::string safeName(const std::string& text);
 
 /// 16 hex digits over every input file of the submission (names, kinds, contents; links by
 /// their target) and `options` (what else decides the grade: the rubric's text, the seed, ...):
 /// a changed submission or changed options give another fingerprint.
 std::string fingerprint(const Submission& submission, const std::string& options);
-
-// ---- outcomes ---------------------------------------------------------------------------------
 
 /// Tasks 1 to 7 (harness/task_files.h): a column each in the gradebook.
 inline constexpr std::size_t kTasks = 7;
@@ -140,8 +137,6 @@ std::string markerJson(const std::string& fingerprint, const Outcome& outcome);
 /// The outcome a marker records, if it is valid and has this fingerprint.
 std::optional<Outcome> outcomeOfMarker(const std::string& markerText,
                                        const std::string& fingerprint);
-
-// ---- the gradebook and the summary ------------------------------------------------------------
 
 /// One CSV field: quoted when it holds a comma, a quote, a line break or leading or trailing
 /// space (quotes doubled).

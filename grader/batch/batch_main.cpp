@@ -101,7 +101,6 @@ double sweepInterval() {
   return seconds >= 0 ? seconds : 1.0;
 }
 
-// One a6_grade at work.
 struct Running {
   std::size_t index;  // into the submissions
   pid_t pid;
@@ -184,7 +183,6 @@ class Batch {
     return queue;
   }
 
-  // Submission i has its outcome: shown, and in the gradebook.
   void finished(std::size_t i, Progress& progress) {
     progress.finished(inv_.submissions[i], *outcomes_[i]);
     writeGradebook();
@@ -217,7 +215,6 @@ class Batch {
     return true;
   }
 
-  // The time limit: the whole process group, at once.
   void enforceTimeouts() {
     for (Running& r : running_) {
       if (!r.timedOut && Clock::now() >= r.deadline) {
@@ -228,7 +225,6 @@ class Batch {
     }
   }
 
-  // Submission i gets no grading: a grader error, and why.
   void failedToStart(std::size_t i, const std::string& why) {
     Outcome o;
     o.status = kGraderError;
@@ -247,7 +243,6 @@ class Batch {
     fs::remove_all(dir / "work", ec);
   }
 
-  // a6_grade's command line for submission s, its results into dir.
   std::vector<std::string> graderArgs(const Submission& s, const fs::path& dir) const {
     std::vector<std::string> args = {grader_.string(), s.path.string(), "--out",
                                      dir.string(),     "--jobs",        "1"};
@@ -511,7 +506,6 @@ class Batch {
     out << "\n";
   }
 
-  // The notes of the inventory, of each submission and of this run.
   std::vector<std::string> allNotes() const {
     std::vector<std::string> notes = inv_.notes;
     for (const Submission& s : inv_.submissions) {
@@ -565,7 +559,6 @@ class Batch {
 
   const Options& o_;
   int jobs_;
-  // Seconds between sweeps for strays (A6_BATCH_SWEEP_SECONDS: the tests provoke races with it).
   double sweepSeconds_ = sweepInterval();
   Inventory inv_;
   fs::path out_;

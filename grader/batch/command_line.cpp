@@ -60,8 +60,6 @@ std::string rubricProblems(const fs::path& grader, const fs::path& rubric) {
 
 }  // namespace
 
-// Reads the command line into `options`; an exit status when the program ends here (--help, or
-// a command line it refuses).
 std::optional<int> parseCommandLine(int argc, char** argv, Options& options) {
   options.starter = a6::paths::starter;
   CLI::App app{
@@ -105,7 +103,6 @@ std::optional<int> parseCommandLine(int argc, char** argv, Options& options) {
   return std::nullopt;
 }
 
-// The input folder, the output folder (created) and the grader, checked; why not, or "".
 std::string checkPaths(const Options& options, fs::path& input, fs::path& out, fs::path& grader) {
   std::error_code ec;
   input = fs::absolute(options.input).lexically_normal();
@@ -128,7 +125,6 @@ std::string checkPaths(const Options& options, fs::path& input, fs::path& out, f
   return "";
 }
 
-// A rubric that cannot be used would fail every grading: said now, before any. Why, or "".
 std::string checkRubric(const Options& options, const fs::path& grader) {
   if (options.rubric.empty()) return "";
   std::error_code ec;
@@ -139,8 +135,6 @@ std::string checkRubric(const Options& options, const fs::path& grader) {
   return "the rubric " + options.rubric + " cannot be used:\n" + problems;
 }
 
-// One batch at a time per output folder (a second would grade the same students at once): the
-// lock is held until the process ends. Why not, or "".
 std::string lockOutput(const fs::path& out) {
   const fs::path lockFile = out / ".a6_batch.lock";
   const int lock = ::open(lockFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
@@ -150,7 +144,6 @@ std::string lockOutput(const fs::path& out) {
   return "";
 }
 
-// What else decides a grade, for the fingerprints: a change regrades.
 std::string decidingOptions(const Options& options) {
   std::ostringstream decides;
   const fs::path rubric =

@@ -12,7 +12,6 @@ namespace a6::grader::batch {
 /// Seconds one submission may take by default (a6_grade's own budget is 420 s).
 constexpr double kDefaultTimeout = 900;
 
-/// What the command line asked for.
 struct Options {
   std::string input;
   std::string out;
@@ -38,8 +37,8 @@ std::string checkPaths(const Options& options, std::filesystem::path& input,
                        std::filesystem::path& out, std::filesystem::path& grader);
 /// A rubric that cannot be used would fail every grading: said now, before any. Why, or "".
 std::string checkRubric(const Options& options, const std::filesystem::path& grader);
-/// One batch at a time per output folder: the lock is held until the process ends. Why not, or
-/// "".
+/// One batch at a time per output folder (a second would grade the same students at once): the
+/// lock is held until the process ends. Why not, or "".
 std::string lockOutput(const std::filesystem::path& out);
 /// What else decides a grade, for the fingerprints: a change regrades.
 std::string decidingOptions(const Options& options);

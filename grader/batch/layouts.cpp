@@ -230,8 +230,7 @@ std::string safeName(const std::string& text) {
 
 namespace {
 
-// Reads a Gradescope submission_metadata.yml one line at a time (the shape: see
-// parseGradescopeMetadata).
+// Reads submission_metadata.yml line by line (the shape: see parseGradescopeMetadata).
 class MetadataReader {
  public:
   void read(std::string line) {
@@ -378,8 +377,7 @@ std::vector<fs::directory_entry> sortedEntries(const fs::path& dir, std::string&
   return entries;
 }
 
-// Entries no student made: hidden files (.DS_Store, .git) and the __MACOSX folder of a zip made
-// on a Mac.
+// Entries no student made: hidden files (.DS_Store, .git), a Mac zip's __MACOSX folder.
 bool systemEntry(const std::string& name, std::vector<std::string>& notes) {
   if (name.empty() || name[0] == '.' || name == "__MACOSX") {
     notes.push_back(name + ": hidden or operating-system files, not a submission: skipped");
@@ -445,8 +443,7 @@ Submission gradescopeSubmission(const std::string& id, const fs::path& path,
   return s;
 }
 
-// The submission id of an export entry (submission_<id>, a folder or an archive), or "" (noted)
-// when it is none.
+// An export entry's submission id (submission_<id>, folder or archive), or "" (noted) if none.
 std::string gradescopeId(const fs::directory_entry& e, Inventory& inv) {
   const std::string name = e.path().filename().string();
   std::error_code ec;
@@ -607,8 +604,7 @@ std::string stage(Submission& submission, const fs::path& dir) {
       return "cannot copy " + from.string() + " to " + (dir / target).string() + ": " +
              ec.message();
   }
-  // One archive uploaded alone is the submission itself (a6_grade does not open an archive
-  // inside a folder).
+  // A lone uploaded archive is the submission (a6_grade opens no archive inside a folder).
   if (submission.files.size() == 1 && !archiveExtension(submission.files[0].second).empty()) {
     submission.path = dir / safeName(fs::path(submission.files[0].second).filename().string());
   } else {

@@ -17,8 +17,6 @@ std::string points(const Outcome& o);
 /// grade in it.
 bool hasGrade(const Outcome& o);
 
-// The progress on stderr: a bar redrawn in place on a terminal, one line per finished
-// submission otherwise (CI logs).
 class Progress {
  public:
   Progress(int total, int done, int toRun, int jobs, bool tty)
