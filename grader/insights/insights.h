@@ -64,8 +64,6 @@ std::vector<SubmissionResult> readFolder(const std::filesystem::path& folder,
 std::vector<std::pair<std::string, std::filesystem::path>> exportedSubmissions(
     const std::filesystem::path& folder);
 
-// ---- the class's numbers ------------------------------------------------------------------------
-
 struct ItemStats {
   std::string name, number;
   int task = 0;
