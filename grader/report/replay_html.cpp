@@ -155,9 +155,8 @@ std::string scriptSafe(const std::string& json) {
   return out;
 }
 
-// The energy plot's range: the reference's, widened to show the student's values up to one and
-// a half of its span beyond (further is off the chart: a run that blows up would flatten the
-// rest).
+// The energy plot's range: the reference's, widened for the student's values by up to 1.5 of its
+// span (further is off the chart: a run that blows up would flatten the rest).
 std::pair<double, double> energyRange(const ReplayView& v) {
   const auto [rlo, rhi] = std::minmax_element(v.referenceEnergy.begin(), v.referenceEnergy.end());
   const double span = std::max(*rhi - *rlo, 1e-6 + 0.05 * std::abs(*rhi));
@@ -282,7 +281,6 @@ std::string svgPlot(const std::string& title, const std::string& unit,
         pen = false;
         continue;
       }
-      // Beyond the range: drawn on its edge (off the chart).
       path +=
           (pen ? " L" : " M") + fixed(X(times[k]), 1) + " " + fixed(Y(std::clamp(y, lo, hi)), 1);
       pen = true;

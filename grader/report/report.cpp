@@ -108,8 +108,7 @@ const NamedMistake* mistakeOf(const GradeReport& report, const ScoredItem& s) {
   return nullptr;
 }
 
-// The first failed check's hint ("  hint: ..." in its message), for the head of an item's output;
-// "" when none has one.
+// The first failed check's hint ("  hint: ..." in its message), or "".
 std::string firstHint(const ScoredItem& s) {
   for (const TestOutcome* t : s.tests) {
     const std::size_t at = t->passed ? std::string::npos : t->message.find("hint: ");
@@ -274,8 +273,7 @@ Json extraData(const GradeReport& report) {
   Json outcomes = Json::object();
   for (const TestOutcome& t : report.tests) outcomes[t.name] = t.passed ? "passed" : "failed";
   extra["tests"] = std::move(outcomes);
-  // How each task file built, for scripts (a6_batch's "build failed"): the same as the output's
-  // "Build:" lines, as keywords.
+  // The output's "Build:" lines as keywords, for scripts (a6_batch's "build failed").
   Json build = Json::object();
   for (const TaskBuild& t : report.build.tasks) build[t.file] = buildWords(t).keyword;
   extra["build"] = std::move(build);
@@ -483,7 +481,6 @@ void htmlHead(std::ostringstream& out, const GradeReport& report) {
   htmlBox(out, "warn", "Notes on this run", report.notes);
 }
 
-// The score table: one row per item, then the total.
 void htmlScoreTable(std::ostringstream& out, const GradeReport& report) {
   out << "<h2>Score</h2>\n<table><tr><th>#</th><th>item</th><th>visibility</th>"
       << "<th class=\"num\">points</th><th class=\"num\">checks passed</th></tr>\n";
