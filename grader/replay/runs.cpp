@@ -48,9 +48,8 @@ std::vector<int> sampleSteps(int steps) {
   return out;
 }
 
-// The longest run of `check` a trajectory can be drawn from (a check that runs 1, 2, ... steps
-// shows most in its last): particles already alive, moved by the reference forces, few enough
-// to draw.
+// The longest run of `check` fit to replay (see runs.h; a check that runs 1, 2, ... steps shows
+// most in its last).
 const harness::ParticleRunRequest* replayableRun(const Transcript& t, const std::string& check) {
   const harness::ParticleRunRequest* longest = nullptr;
   for (const auto& x : t.of<harness::ParticleRunRequest>()) {
