@@ -221,7 +221,6 @@ void parseTests(const toml::node& node, int line, const std::string& where, Chec
   }
 }
 
-// One key of an item, checked into `item`.
 void parseItemKey(const std::string& k, const toml::node& node, int line, const std::string& label,
                   Checker& check, RubricItem& item) {
   const std::string where = "'" + k + "' of " + label;
@@ -280,7 +279,6 @@ void parseItem(const toml::table& table, int index, Visibility defaultVisibility
   rubric.items.push_back(std::move(item));
 }
 
-// The defaults the top level sets for every item.
 struct ItemDefaults {
   Visibility visibility = Visibility::Visible;
   double timeLimit = 10;
@@ -314,7 +312,6 @@ ItemDefaults parseTopLevel(const toml::table& root, Checker& check, Rubric& rubr
   return defaults;
 }
 
-// The [[item]] tables, in order.
 void parseItems(const toml::table& root, const ItemDefaults& defaults, Checker& check,
                 Rubric& rubric) {
   const toml::node* items = root.get("item");

@@ -21,7 +21,6 @@ namespace a6::grader {
 
 struct GradeReport;  // report/report.h
 
-/// One rubric item, scored.
 struct ScoredItem {
   RubricItem item;
   double score = 0;
