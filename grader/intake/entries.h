@@ -117,9 +117,8 @@ enum class Kind { Regular, Directory, Symlink, Hardlink, Device, Fifo, Socket, O
 
 const char* describe(Kind kind);
 
-// Decides what to do with one entry; notes refusals. Returns the task file name to read, or "".
 // The checks every entry goes through, archive or folder (a regular file, safe path, not too
-// deep, named like a task file).
+// deep, named like a task file); refusals noted. Returns the task file name to read, or "".
 std::string screen(Collector& c, const std::string& raw, const EntryPath& p, Kind kind,
                    const std::string& linkTarget, bool& sawNestedArchive);
 
