@@ -45,9 +45,7 @@ void closeRange(int lo, int hi, int maxFd) {
   for (int fd = lo; fd <= std::min(hi, maxFd); ++fd) ::close(fd);
 }
 
-// The child, between fork and execve: system calls only, no allocation. Its set-up is a list of
-// small named steps (childMain, at the end); a fatal step reports its stage and errno on the
-// status pipe and exits 127, a step that only weakens the sandbox reports and goes on.
+// The child's steps (childMain, at the end); one that only weakens the sandbox reports and goes on.
 class Child {
  public:
   explicit Child(Plan& plan) : p_(plan), statusFd_(plan.statusFd) {}

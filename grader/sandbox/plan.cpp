@@ -340,7 +340,6 @@ void deleteWorkDir(const std::string& dir) {
   fs::remove_all(dir, ec);
 }
 
-// Everything before fork. Returns an error, or "".
 std::string makePlan(const SandboxSpec& spec, Plan& plan) {
   if (spec.argv.empty() || spec.argv[0].empty() || spec.argv[0][0] != '/') {
     return "argv[0] must be an absolute path" +
@@ -357,7 +356,6 @@ std::string makePlan(const SandboxSpec& spec, Plan& plan) {
   return "";
 }
 
-// A child's setup report as a sentence for the grader's log or the student's report.
 std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec& spec) {
   if (std::string text = describeIsolationStep(r, plan); !text.empty()) return text;
   return describeProcessStep(r, plan, spec);

@@ -26,8 +26,7 @@ namespace a6::grader::sandboxing {
 
 inline std::string errnoText(int err) { return std::strerror(err); }
 
-// The status records
-// ---------------------------------------------------------------------------------
+// The status pipe's records: a step of the child that failed (fatal or not), with its errno.
 
 enum Stage : std::int32_t {
   kSetsid = 1,
@@ -58,9 +57,6 @@ struct Record {
   std::int32_t err;
   std::int32_t index;
 };
-
-// The plan
-// --------------------------------------------------------------------------------------------
 
 struct MountOp {
   enum Kind { HideDir, HideFile, Reveal } kind = HideDir;

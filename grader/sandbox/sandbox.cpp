@@ -50,8 +50,7 @@ std::string formatSeconds(double s) {
   return text;
 }
 
-// Captured output
-// ----------------------------------------------------------------------------------
+// ---- captured output ----------------------------------------------------------------------------
 
 struct Sink {
   mutable std::mutex mutex;
@@ -247,9 +246,8 @@ bool hasEnded(pid_t pid) {
 }
 
 // Kills the whole group (the child stays unreaped until then, so its pgid is not reused) and
-// reaps the child.
-// `cpuSeconds`, when given, receives the CPU time the child and what it reaped used (in a pid
-// namespace, the keeper reaped the program: its time is in there).
+// reaps the child. `cpuSeconds`, when given, receives the CPU time the child and what it reaped
+// used (in a pid namespace, the keeper reaped the program: its time is in there).
 int killAndReap(pid_t pid, double* cpuSeconds = nullptr) {
   kill(-pid, SIGKILL);
   kill(pid, SIGKILL);
@@ -305,8 +303,7 @@ bool killedByTheMachine(const Exit& e, const Limits& limits) {
   return e.kind == Exit::Kind::Signaled && e.code == SIGKILL && e.cpuSeconds < limits.cpuSeconds;
 }
 
-// runSandboxed
-// -------------------------------------------------------------------------------------
+// ---- runSandboxed -------------------------------------------------------------------------------
 
 Exit runSandboxed(const SandboxSpec& spec) {
   const auto begin = Clock::now();
@@ -370,8 +367,7 @@ Exit runSandboxed(const SandboxSpec& spec) {
   return exit;
 }
 
-// SandboxedProcess
-// -------------------------------------------------------------------------------------
+// ---- SandboxedProcess ---------------------------------------------------------------------------
 
 struct SandboxedProcess::State {
   Sink sink;

@@ -13,20 +13,18 @@
 //      status to the parent on a pipe. Where the kernel refuses (a container without
 //      CAP_SYS_ADMIN), a plain fork, and Exit::notes says so;
 //   1. its own session and process group (the parent kills the whole group with SIGKILL);
-//   2. as root: a private mount namespace, with the pid namespace's own /proc, where every
-//      `hide` path is covered (a directory by an
-//      empty tmpfs, a file by /dev/null), with the `reveal` paths, the work dir and argv[0]
-//      bound back in place (allowOnly() makes `hide` an allow-list of the machine); a folder
-//      above a revealed path that `uid` cannot search (a checkout in /root, mode 0700) is
-//      covered too, and the way to the revealed path rebuilt with searchable folders; the
-//      work dir a size-capped tmpfs when asked; then a new, empty network namespace;
+//   2. as root: a private mount namespace, with the pid namespace's own /proc, where every `hide`
+//      path is covered (a directory by an empty tmpfs, a file by /dev/null), with the `reveal`
+//      paths, the work dir and argv[0] bound back in place (allowOnly() makes `hide` an allow-list
+//      of the machine); a folder above a revealed path that `uid` cannot search (a checkout in
+//      /root, mode 0700) is covered too, and the way to the revealed path rebuilt with searchable
+//      folders; the work dir a size-capped tmpfs when asked; then a new, empty network namespace;
 //   3. rlimits: CPU, address space, file size, open files, processes, no core files;
 //   4. stdin from /dev/null, stdout and stderr into one pipe the parent drains (capped at
 //      Limits::outputBytes; the rest is read and dropped so the child never blocks), the
 //      requested fds, every other fd closed;
 //   5. cwd = the fresh work dir; as root: setgroups(0), setgid/setuid to `uid`/`gid` (a
-//      grading's own user, grader/sandbox/process.h);
-//      a parent-death signal (SIGKILL);
+//      grading's own user, grader/sandbox/process.h); a parent-death signal (SIGKILL);
 //   6. no_new_privs and a seccomp filter: socket() fails with EACCES (the network stays off even
 //      where namespaces are not permitted, e.g. an unprivileged Docker container), io_uring,
 //      ptrace and process_vm_* fail with EPERM; with Limits::processes == 0, fork fails too;
