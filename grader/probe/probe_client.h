@@ -34,8 +34,6 @@ inline double forceWaitAllowance(std::size_t answers, double limit) {
   return extra < kForceWaitCap * limit ? extra : kForceWaitCap * limit;
 }
 
-/// What the student's code did to the probes, for a TA's "to look at" list (a6_batch): each
-/// counts once per probe stopped for it.
 /// The words of a failed request, as students read them. With A6_REWORD_MESSAGES=1 in the
 /// grader's environment every such message is prefixed "[reworded] ": the test that proves no
 /// decision (a score, a retry, a start-up verdict) reads the words, only Outcome::fault, grades
@@ -48,6 +46,8 @@ std::string reworded(std::string words);
 /// rest of the work folder (the rendered images), not /tmp or any folder others may write to.
 SandboxView probeView(const std::vector<std::filesystem::path>& secrets);
 
+/// What the student's code did to the probes, for a TA's "to look at" list (a6_batch): each
+/// counts once per probe stopped for it.
 struct ProbeIncidents {
   int crashes = 0;        ///< killed by a signal (SIGSEGV, SIGABRT, SIGXCPU...) or exited
   int timeouts = 0;       ///< stopped at a request's time limit

@@ -40,7 +40,6 @@ class ProbePair final : public harness::StudentCode {
   std::vector<std::string> notes() const;
 
  private:
-  /// The probe with the reference forces answers what asks for them; the other, the rest.
   harness::Answer respond(const harness::Request& request) override;
 
   std::unique_ptr<ProbeClient> plain_, models_;
