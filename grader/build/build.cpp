@@ -108,7 +108,6 @@ SandboxView viewOfTools(const Kit& kit, const fs::path& workDir,
   return allowOnly(keep, kit.secrets);
 }
 
-// Runs the compiler or the linker in the sandbox, in `dir`.
 Exit runTool(const Kit& kit, const SandboxView& view, const fs::path& dir,
              std::vector<std::string> argv, const Limits& limits) {
   SandboxSpec s;
