@@ -72,7 +72,6 @@ struct ChecksInput {
   harness::StudentCode* linked = nullptr;
 };
 
-/// What running the checks gave.
 struct ChecksRun {
   std::vector<TestOutcome> tests;
   std::vector<std::string> errors;  ///< the grader's own failures

@@ -32,7 +32,6 @@ struct ExchangeOf {
 struct Transcript {
   std::vector<Exchange> exchanges;  ///< in the order the checks asked
 
-  /// Keeps one exchange of kind R.
   template <class R>
   void add(std::string check, const R& request, typename R::Result result) {
     exchanges.push_back({std::move(check),
