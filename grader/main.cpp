@@ -7,10 +7,8 @@
 //   a6_grade --check-rubric [--rubric FILE]
 //   a6_grade --list-items [--rubric FILE]
 //
-// This file only reads the command line. The stages of a grading run in grading/grading.cpp:
-// intake -> build -> the physics suite (and the golden-image checks) run in this process
-// against the sandboxed probe (checks/) -> score with the rubric -> DIR/results.json
-// (Gradescope), DIR/report.html, a summary on stdout. Student code never runs in this process:
+// This file only reads the command line; the stages (grading/grading.cpp) write DIR/results.json
+// (Gradescope), DIR/report.html and a summary on stdout. Student code never runs in this process:
 // the suite's a6::test::student() is the probe.
 //
 // Exit status: 0 when grading completed, whatever the score (a submission that does not build
@@ -163,8 +161,7 @@ int dispatch(const Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // What a probe leaves running when it ends is reparented here, to be ended
-  // (process::endStrayChildren).
+  // What a probe leaves running is reparented here, to be ended (process::endStrayChildren).
   prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
   Options options;
   CLI::App app{"a6_grade: grades one Assignment 6 submission (docs/instructor.md)"};
