@@ -170,8 +170,7 @@ class InProcess final : public StudentCode {
                       request);
   }
 
-  // One student call per request kind: builds the framework objects from the request's plain
-  // data, calls the student's functions, and turns what they produced back into plain data.
+  // One run() per request kind, each the student call it stands for.
 
   // The spring of a request, between copies of its particles.
   struct SpringOf {

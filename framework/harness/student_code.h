@@ -61,7 +61,6 @@ struct Outcome {
   Fault fault = Fault::None;
   std::string error;
   bool ok() const { return fault == Fault::None && error.empty(); }
-  /// Sets the fault and its words.
   void fail(Fault why, std::string words) {
     fault = why;
     error = std::move(words);

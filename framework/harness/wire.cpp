@@ -23,8 +23,7 @@ using nlohmann::json;
 
 namespace {
 
-// Doubles
-// ------------------------------------------------------------------------------------------
+// Doubles ----------------------------------------------------------------------------------------
 
 constexpr std::uint64_t kPositiveNaN = 0x7ff8000000000000ull;
 constexpr std::uint64_t kNegativeNaN = 0xfff8000000000000ull;
@@ -426,8 +425,7 @@ harness::Answer decodeAnswer(std::size_t kind, const json& j) {
   return decodeAnswerAt(kind, j, kKinds);
 }
 
-// Serving
-// ------------------------------------------------------------------------------------------
+// Serving ----------------------------------------------------------------------------------------
 
 json serve(harness::StudentCode& code, const json& message) {
   try {
@@ -441,8 +439,7 @@ json serve(harness::StudentCode& code, const json& message) {
   }
 }
 
-// Framing
-// ------------------------------------------------------------------------------------------
+// Framing ----------------------------------------------------------------------------------------
 
 std::string dump(const json& message) {
   return message.dump(-1, ' ', false, json::error_handler_t::replace);

@@ -65,7 +65,6 @@ typename R::Result decodeResult(const nlohmann::json& j) {
 /// alone when there is nothing else to say).
 nlohmann::json serve(harness::StudentCode& code, const nlohmann::json& request);
 
-// Framing -----------------------------------------------------------------------------------------
 /// The largest message either side accepts, bytes (a longer announced length is garbage).
 constexpr std::size_t kMaxFrameBytes = std::size_t{256} << 20;
 
