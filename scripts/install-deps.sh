@@ -36,6 +36,7 @@ packages=(
   libtomlplusplus-dev  # TOML (the grader's rubric)
   libcli11-dev       # command lines of the grader's tools
   libarchive-dev     # reading submitted zips and tarballs
+  libyaml-cpp-dev    # YAML (a Gradescope export's submission_metadata.yml, a6_batch)
   libseccomp-dev     # the probe's system-call filter
   libstb-dev         # stb_image_write / stb_image (PNG)
   libosmesa6-dev     # OSMesa: headless OpenGL (Mesa 22.3, llvmpipe)

@@ -12,6 +12,8 @@
 // Keys (a submission's folder under the output folder) must come out the same on every run, or
 // a resumed batch would not find its markers: the entries are read in sorted order and a
 // duplicate key gets "-2", "-3", ... in that order.
+#include <yaml-cpp/yaml.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -22,7 +24,6 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <system_error>
 
 #include "batch/batch.h"
@@ -85,61 +86,6 @@ void assignKeys(std::vector<Submission>& subs, std::vector<std::string>& notes) 
   }
   std::sort(subs.begin(), subs.end(),
             [](const Submission& a, const Submission& b) { return a.key < b.key; });
-}
-
-// ---- Gradescope -------------------------------------------------------------------------------
-
-int indentOf(const std::string& line) {
-  int n = 0;
-  while (n < static_cast<int>(line.size()) && line[static_cast<std::size_t>(n)] == ' ') ++n;
-  return n;
-}
-
-// A YAML scalar as Gradescope writes them: plain, 'single' ('' for a quote) or "double" (with
-// backslash escapes); a trailing comment after a plain value is dropped.
-std::string yamlScalar(std::string v) {
-  while (!v.empty() && (v.back() == ' ' || v.back() == '\r' || v.back() == '\t')) v.pop_back();
-  std::size_t start = v.find_first_not_of(' ');
-  if (start == std::string::npos) return "";
-  v = v.substr(start);
-  if (v.size() >= 2 && v.front() == '\'' && v.back() == '\'') {
-    std::string out;
-    for (std::size_t i = 1; i + 1 < v.size(); ++i) {
-      out += v[i];
-      if (v[i] == '\'' && v[i + 1] == '\'') ++i;
-    }
-    return out;
-  }
-  if (v.size() >= 2 && v.front() == '"' && v.back() == '"') {
-    std::string out;
-    for (std::size_t i = 1; i + 1 < v.size(); ++i) {
-      if (v[i] == '\\' && i + 2 < v.size()) {
-        const char e = v[++i];
-        out += e == 'n' ? '\n' : e == 't' ? '\t' : e;
-      } else {
-        out += v[i];
-      }
-    }
-    return out;
-  }
-  if (const std::size_t hash = v.find(" #"); hash != std::string::npos) {
-    v.resize(hash);
-    while (!v.empty() && v.back() == ' ') v.pop_back();
-  }
-  if (v == "~" || v == "null") return "";
-  return v;
-}
-
-// "key: value" -> (key, value) for keys such as ":name:" (Ruby symbols) or "name".
-bool keyValue(const std::string& text, std::string& key, std::string& value) {
-  std::size_t from = 0;
-  if (!text.empty() && text[0] == ':') from = 1;
-  const std::size_t colon = text.find(':', from);
-  if (colon == std::string::npos) return false;
-  if (colon + 1 < text.size() && text[colon + 1] != ' ') return false;
-  key = text.substr(from, colon - from);
-  value = colon + 1 < text.size() ? text.substr(colon + 1) : "";
-  return true;
 }
 
 // ---- Canvas -----------------------------------------------------------------------------------
@@ -230,91 +176,49 @@ std::string safeName(const std::string& text) {
 
 namespace {
 
-// Reads submission_metadata.yml line by line (the shape: see parseGradescopeMetadata).
-class MetadataReader {
- public:
-  void read(std::string line) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const int indent = indentOf(line);
-    const std::string body = line.substr(static_cast<std::size_t>(indent));
-    if (body.empty() || body[0] == '#' || body == "---" || body[0] == '\t') return;
-    if (indent == 0) {
-      startSubmission(body);
-      return;
-    }
-    if (people_ == nullptr) return;
-    if (childIndent_ < 0) childIndent_ = indent;
-    if (listIndent_ >= 0 && inSubmitters(indent, body)) return;
-    std::string key, value;
-    if (indent == childIndent_ && keyValue(body, key, value) && key == "submitters" &&
-        yamlScalar(value).empty()) {
-      listIndent_ = indent;  // (":submitters: []" names nobody)
-      itemIndent_ = -1;
-    }
+// The value at a key Gradescope writes as a Ruby symbol (":name"), or at the plain key; a null
+// node when neither is there.
+YAML::Node at(const YAML::Node& map, const std::string& key) {
+  if (!map.IsMap()) return YAML::Node();
+  for (const std::string& k : {":" + key, key}) {
+    if (const YAML::Node value = map[k]) return value;
   }
+  return YAML::Node();
+}
 
-  std::map<std::string, std::vector<Person>> take() { return std::move(out_); }
-
- private:
-  // A top-level key starts the next submission (a block scalar's text is always indented).
-  void startSubmission(const std::string& body) {
-    std::string key, value;
-    people_ = nullptr;
-    listIndent_ = -1;
-    if (keyValue(body, key, value) && yamlScalar(value).empty()) {
-      people_ = &out_[key];
-      childIndent_ = -1;
-    }
-  }
-
-  // Inside the :submitters: list: a line of it (true), or the first line after it (false).
-  bool inSubmitters(int indent, const std::string& body) {
-    const bool item = body.rfind("- ", 0) == 0;
-    if (item && indent >= listIndent_ && (itemIndent_ < 0 || indent == itemIndent_)) {
-      itemIndent_ = indent;
-      people_->emplace_back();
-      setField(body.substr(2));
-      return true;
-    }
-    if (itemIndent_ >= 0 && indent == itemIndent_ + 2) {
-      setField(body);
-      return true;
-    }
-    if (indent > listIndent_) return true;  // deeper data of a submitter
-    listIndent_ = -1;                       // the list ended
-    return false;
-  }
-
-  void setField(const std::string& text) {
-    std::string key, value;
-    if (people_->empty() || !keyValue(text, key, value)) return;
-    Person& p = people_->back();
-    if (key == "name") p.name = yamlScalar(value);
-    if (key == "email") p.email = yamlScalar(value);
-    if (key == "sid") p.sid = yamlScalar(value);
-  }
-
-  std::map<std::string, std::vector<Person>> out_;
-  std::vector<Person>* people_ = nullptr;  // the submission being read
-  int childIndent_ = -1;                   // indentation of its keys
-  int listIndent_ = -1;                    // >= 0 inside its :submitters: list: the key's indent
-  int itemIndent_ = -1;                    // indentation of the list's "- "
-};
+std::string scalarAt(const YAML::Node& map, const std::string& key) {
+  const YAML::Node value = at(map, key);
+  return value.IsScalar() ? value.Scalar() : "";
+}
 
 }  // namespace
 
 std::map<std::string, std::vector<Person>> parseGradescopeMetadata(const std::string& yaml) {
-  // The shape read (Gradescope writes Ruby symbols as keys; other keys and deeper data skipped):
+  // The shape read (Gradescope writes Ruby symbols as keys; other keys are skipped):
   //   submission_<id>:
   //     :submitters:
   //     - :name: Jane Doe
   //       :sid: '123'
   //       :email: jane@example.edu
   //     :created_at: ...
-  MetadataReader reader;
-  std::istringstream in(yaml);
-  for (std::string line; std::getline(in, line);) reader.read(line);
-  return reader.take();
+  std::map<std::string, std::vector<Person>> out;
+  try {
+    const YAML::Node root = YAML::Load(yaml);
+    if (!root.IsMap()) return out;
+    for (const auto& submission : root) {
+      if (!submission.first.IsScalar()) continue;
+      if (!submission.second.IsMap() && !submission.second.IsNull()) continue;
+      std::vector<Person>& people = out[submission.first.Scalar()];
+      const YAML::Node submitters = at(submission.second, "submitters");
+      if (!submitters.IsSequence()) continue;
+      for (const YAML::Node& s : submitters) {
+        people.push_back({scalarAt(s, "name"), scalarAt(s, "email"), scalarAt(s, "sid")});
+      }
+    }
+  } catch (const YAML::Exception&) {
+    return {};  // not YAML: no submission named (the caller says so)
+  }
+  return out;
 }
 
 // ---- Canvas -----------------------------------------------------------------------------------

@@ -310,6 +310,11 @@ submission_600000002:
   EXPECT_EQ(group[1].name, "Bob B");
   EXPECT_EQ(group[1].sid, "222");
   EXPECT_TRUE(m.at("submission_600000002").empty());
+  // Not YAML, or nested past the parser's depth: no submission named, and no crash.
+  for (const std::string& bad : {std::string("a: [1\n"), std::string(100000, '['),
+                                 std::string("\x01\xff\0garbage", 10), std::string("- a\n- b\n")}) {
+    EXPECT_TRUE(batch::parseGradescopeMetadata(bad).empty()) << bad.substr(0, 20);
+  }
 }
 
 TEST(BatchParts, CanvasNamesGiveTheStudentAndTheOriginalName) {
