@@ -72,6 +72,22 @@ std::vector<Likeness> judgeEach(const Exchanges& exchanges, Reference reference,
   return out;
 }
 
+/// The catalogue models of task `task` written from one function answer(request, flaw) (a
+/// std::optional, empty where it cannot answer): gives model(id, flaw, text), judged on every
+/// request of kind R, the flaw's answer beside the reference's, answer(request, Flaw{}) (every
+/// Flaw's first value is None).
+template <class R, class Flaw, class Answer, class Same>
+auto flawModels(int task, Answer answer, Same same) {
+  return [task, answer, same](const char* id, Flaw flaw, const char* text) {
+    auto judge = [answer, same, flaw](const Transcript& t) {
+      return judgeEach(
+          t.of<R>(), [answer](const R& r) { return answer(r, Flaw{}); },
+          [answer, flaw](const R& r) { return answer(r, flaw); }, same);
+    };
+    return MistakeModel{id, task, text, judge};
+  };
+}
+
 /// A likeness from what the student's answer shows directly (for mistakes recognised by a
 /// property of the answer: a joint's limit left off, a pointer left set).
 inline Likeness shows(bool likeMistake, bool likeReference) {

@@ -36,7 +36,8 @@ Vec2 externalTotal(const ForcesRequest& r, const ForcesResult& parts, Flaw flaw)
   return f;
 }
 
-ForcesResult forces(const ForcesRequest& r, Flaw flaw) {
+// The answer of the forces with `flaw` (never empty: every request can be answered).
+std::optional<ForcesResult> forces(const ForcesRequest& r, Flaw flaw) {
   const Particle& p = r.particle;
   const Environment& env = r.env;
   ForcesResult out;
@@ -55,19 +56,10 @@ bool same(const ForcesResult& a, const ForcesResult& b) {
          near(a.repulsion, b.repulsion) && near(a.total, b.total);
 }
 
-MistakeModel model(const char* id, Flaw flaw, const char* text) {
-  auto judge = [flaw](const Transcript& t) {
-    return judgeEach(
-        t.of<harness::ForcesRequest>(),
-        [](const ForcesRequest& r) { return std::optional(forces(r, Flaw::None)); },
-        [flaw](const ForcesRequest& r) { return std::optional(forces(r, flaw)); }, same);
-  };
-  return MistakeModel{id, 2, text, judge};
-}
-
 }  // namespace
 
 std::vector<MistakeModel> task2Mistakes() {
+  const auto model = flawModels<ForcesRequest, Flaw>(2, forces, same);
   return {
       model("t2_gravity_without_mass", Flaw::GravityWithoutMass,
             "Your gravity behaves exactly like g without the mass: every particle weighs as if "

@@ -134,19 +134,10 @@ std::optional<ClothResult> answer(const harness::ClothRequest& request, Flaw fla
   return cloth(request.spec, flaw);
 }
 
-MistakeModel model(const char* id, Flaw flaw, const char* text) {
-  auto judge = [flaw](const Transcript& t) {
-    return judgeEach(
-        t.of<harness::ClothRequest>(),
-        [](const harness::ClothRequest& r) { return answer(r, Flaw::None); },
-        [flaw](const harness::ClothRequest& r) { return answer(r, flaw); }, same);
-  };
-  return MistakeModel{id, 4, text, judge};
-}
-
 }  // namespace
 
 std::vector<MistakeModel> task4Mistakes() {
+  const auto model = flawModels<harness::ClothRequest, Flaw>(4, answer, same);
   return {
       model("t4_missing_last_column", Flaw::MissingLastColumn,
             "Your cloth behaves exactly like one whose structural loop stops at i < n: the "

@@ -31,16 +31,6 @@ bool same(const ParticlesResult& a, const ParticlesResult& b) {
   return true;
 }
 
-MistakeModel updateModel(const char* id, ParticleFlaw flaw, const char* text) {
-  auto judge = [flaw](const Transcript& t) {
-    return judgeEach(
-        t.of<harness::ParticleRunRequest>(),
-        [](const ParticleRunRequest& r) { return runParticles(r, ParticleFlaw::None); },
-        [flaw](const ParticleRunRequest& r) { return runParticles(r, flaw); }, same);
-  };
-  return MistakeModel{id, 5, text, judge};
-}
-
 // Emitted samples large enough to tell (the checks emit thousands).
 constexpr std::size_t kSample = 200;
 
@@ -92,6 +82,7 @@ MistakeModel discModel() {
 }  // namespace
 
 std::vector<MistakeModel> task5Mistakes() {
+  const auto updateModel = flawModels<ParticleRunRequest, ParticleFlaw>(5, runParticles, same);
   return {
       updateModel("t5_position_before_velocity", ParticleFlaw::PositionFirst,
                   "Your update behaves exactly like explicit Euler: the position moves before "
