@@ -4,29 +4,15 @@
 // of v and x, the pins, the substeps' length) each in the physics' form or a wrong one, with one
 // or two parts wrong. Requests run on the student's own forces or with the implicit step cannot
 // be modelled: they are skipped.
-#include <optional>
-
-#include "mistakes/library/compare.h"
 #include "mistakes/library/models.h"
+#include "mistakes/library/step_parts.h"
 #include "mistakes/library/steppers.h"
 
 namespace a6::grader::mistakes {
-namespace {
 
-using harness::SimulateRequest;
-using harness::SimulateResult;
-
-// One wrong form of one part of the step: its key (the model's id; a one-part form's is the
-// wrong version's it was first written from, tests/wrong/t3_<key>), what it does, and the form.
-struct WrongPart {
-  int part;  // parts with the same number exclude each other
-  const char* key;
-  const char* does;
-  void (*apply)(StepForm&);
-};
-
-const std::vector<WrongPart>& wrongParts() {
-  static const std::vector<WrongPart> parts = {
+// Every step with one or two parts in a wrong form, named part by part (MistakeModel::partByPart).
+std::vector<MistakeModel> task3Mistakes() {
+  const std::vector<WrongPart<StepForm>> parts = {
       {0, "forces_not_reset",
        "never resets the forces (p.f += externalForce(p) adds to the last step's): start each "
        "step with p.f = externalForce(p)",
@@ -55,41 +41,7 @@ const std::vector<WrongPart>& wrongParts() {
        "takes substeps of the whole frame time in advance: each must be frameDt / n long",
        [](StepForm& f) { f.substepFullDt = true; }},
   };
-  return parts;
-}
-
-MistakeModel model(const std::vector<const WrongPart*>& wrong) {
-  StepForm form;
-  std::string key, text = "Your step ";
-  for (const WrongPart* part : wrong) {
-    part->apply(form);
-    key += (key.empty() ? "" : "_and_") + std::string(part->key);
-    text += (part == wrong.front() ? "" : "; it ") + std::string(part->does);
-  }
-  auto judge = [form](const Transcript& t) {
-    return judgeEach(
-        t.of<harness::SimulateRequest>(),
-        [](const SimulateRequest& r) { return simulate(r, StepForm{}); },
-        [form](const SimulateRequest& r) { return simulate(r, form); }, sameRun);
-  };
-  MistakeModel m{"t3_" + key, 3, text + ".", judge};
-  m.partByPart = true;
-  return m;
-}
-
-}  // namespace
-
-// Every step with one or two parts in a wrong form, named part by part (MistakeModel::partByPart).
-std::vector<MistakeModel> task3Mistakes() {
-  std::vector<MistakeModel> models;
-  const std::vector<WrongPart>& parts = wrongParts();
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    models.push_back(model({&parts[i]}));
-    for (std::size_t j = i + 1; j < parts.size(); ++j) {
-      if (parts[j].part != parts[i].part) models.push_back(model({&parts[i], &parts[j]}));
-    }
-  }
-  return models;
+  return stepModels(3, "step", simulate, parts);
 }
 
 }  // namespace a6::grader::mistakes
