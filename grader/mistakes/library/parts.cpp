@@ -158,6 +158,18 @@ const std::vector<Form<Mat2>>& dfdvForms() {
   return forms;
 }
 
+// The ids the catalogue gave these combinations before they were named part by part (their
+// wrong versions' EXPECT files name them).
+std::string knownAs(const std::string& id) {
+  if (id == "t1_elastic_sign") return "t1_wrong_sign";
+  if (id == "t1_damping_unprojected") return "t1_damping_full_relative_velocity";
+  if (id == "t1_damping_v2_only") return "t1_damping_uses_v2_only";
+  if (id == "t7_dfdx_sign") return "t7_jacobian_wrong_sign";
+  if (id == "t7_dfdx_isotropic") return "t7_missing_outer_product";
+  if (id == "t7_dfdv_missing") return "t7_no_damping_jacobian";
+  return id;
+}
+
 // The sentence for one wrong part: "<part> <how>: yours is <formula>, the physics gives <...>".
 template <class Value>
 std::string partSentence(const char* part, const Form<Value>& yours, const Form<Value>& physics) {
@@ -165,12 +177,12 @@ std::string partSentence(const char* part, const Form<Value>& yours, const Form<
          ", the physics gives " + physics.formula;
 }
 
-// The id and the sentence of a combination (i, j) of two parts' forms (not both the physics').
+// The model of a combination (i, j) of two parts' forms (not both the physics'), without its judge:
+// its id (knownAs) and its sentence.
 template <class A, class B>
-std::pair<std::string, std::string> describe(int task, const std::string& whose, const char* first,
-                                             const std::vector<Form<A>>& as, int i,
-                                             const char* second, const std::vector<Form<B>>& bs,
-                                             int j) {
+MistakeModel describe(int task, const std::string& whose, const char* first,
+                      const std::vector<Form<A>>& as, std::size_t i, const char* second,
+                      const std::vector<Form<B>>& bs, std::size_t j) {
   std::string id = "t" + std::to_string(task) + "_";
   std::string text = "Your " + whose + " ";
   if (i != 0) {
@@ -184,19 +196,9 @@ std::pair<std::string, std::string> describe(int task, const std::string& whose,
   }
   if (i == 0) text += std::string(" (its ") + first + " is right)";
   if (j == 0) text += std::string(" (its ") + second + " is right)";
-  return {id, text + "."};
-}
-
-// The ids the catalogue gave these combinations before they were named part by part (their
-// wrong versions' EXPECT files name them).
-std::string knownAs(const std::string& id) {
-  if (id == "t1_elastic_sign") return "t1_wrong_sign";
-  if (id == "t1_damping_unprojected") return "t1_damping_full_relative_velocity";
-  if (id == "t1_damping_v2_only") return "t1_damping_uses_v2_only";
-  if (id == "t7_dfdx_sign") return "t7_jacobian_wrong_sign";
-  if (id == "t7_dfdx_isotropic") return "t7_missing_outer_product";
-  if (id == "t7_dfdv_missing") return "t7_no_damping_jacobian";
-  return id;
+  MistakeModel m{knownAs(id), task, text + ".", nullptr};
+  m.partByPart = true;
+  return m;
 }
 
 // Whether every answer to the requests of kind R is zero: a stub's, which is named nothing
@@ -210,10 +212,10 @@ bool allZero(const Transcript& t, Zero zero) {
 }
 
 // Task 1's model of elastic form i and damping form j, judged on every force request.
-MistakeModel forceModel(int i, int j) {
-  auto [id, text] = describe(1, "spring force's", "elastic term", elasticForms(), i, "damping term",
-                             dampingForms(), j);
-  auto judge = [i, j](const Transcript& t) {
+MistakeModel forceModel(std::size_t i, std::size_t j) {
+  MistakeModel m = describe(1, "spring force's", "elastic term", elasticForms(), i, "damping term",
+                            dampingForms(), j);
+  m.judge = [i, j](const Transcript& t) {
     std::vector<Likeness> out;
     const auto zero = [](const SpringForceResult& a) { return a.force == Vec2::Zero(); };
     if (allZero<harness::SpringForceRequest>(t, zero)) return out;
@@ -229,8 +231,6 @@ MistakeModel forceModel(int i, int j) {
     }
     return out;
   };
-  MistakeModel m{knownAs(id), 1, text, judge};
-  m.partByPart = true;
   return m;
 }
 
@@ -239,9 +239,9 @@ bool nearMatrix(const Mat2& a, const Mat2& b, double scale) {
 }
 
 // Task 7's model of dfdx form i and dfdv form j, judged on every Jacobian request.
-MistakeModel jacobianModel(int i, int j) {
-  auto [id, text] = describe(7, "springJacobians'", "dfdx", dfdxForms(), i, "dfdv", dfdvForms(), j);
-  auto judge = [i, j](const Transcript& t) {
+MistakeModel jacobianModel(std::size_t i, std::size_t j) {
+  MistakeModel m = describe(7, "springJacobians'", "dfdx", dfdxForms(), i, "dfdv", dfdvForms(), j);
+  m.judge = [i, j](const Transcript& t) {
     std::vector<Likeness> out;
     const auto zero = [](const JacobiansResult& a) {
       return a.dfdx == Mat2::Zero() && a.dfdv == Mat2::Zero();
@@ -262,8 +262,6 @@ MistakeModel jacobianModel(int i, int j) {
     }
     return out;
   };
-  MistakeModel m{knownAs(id), 7, text, judge};
-  m.partByPart = true;
   return m;
 }
 
@@ -271,24 +269,19 @@ MistakeModel jacobianModel(int i, int j) {
 
 std::vector<MistakeModel> partByPartMistakes() {
   std::vector<MistakeModel> models;
-  const int elastic = static_cast<int>(elasticForms().size());
-  const int damping = static_cast<int>(dampingForms().size());
-  for (int i = 0; i < elastic; ++i) {
-    for (int j = 0; j < damping; ++j) {
-      // The physics, and a stub that returns zero (every part missing), are no mistake; nor is
-      // a stub's answers that fit a form with one part missing (allZero).
-      if ((i == 0 && j == 0) || (i == elastic - 1 && j == damping - 1)) continue;
-      models.push_back(forceModel(i, j));
+  // Every combination (i, j) of forms, in order, but the physics' (0, 0) and a stub's that returns
+  // zero (every part missing: each list's last), which are no mistake; nor is a stub's answers
+  // that fit a form with one part missing (allZero).
+  const auto add = [&models](std::size_t a, std::size_t b,
+                             MistakeModel (*model)(std::size_t, std::size_t)) {
+    for (std::size_t i = 0; i < a; ++i) {
+      for (std::size_t j = 0; j < b; ++j) {
+        if ((i != 0 || j != 0) && (i != a - 1 || j != b - 1)) models.push_back(model(i, j));
+      }
     }
-  }
-  const int dfdx = static_cast<int>(dfdxForms().size());
-  const int dfdv = static_cast<int>(dfdvForms().size());
-  for (int i = 0; i < dfdx; ++i) {
-    for (int j = 0; j < dfdv; ++j) {
-      if ((i == 0 && j == 0) || (i == dfdx - 1 && j == dfdv - 1)) continue;
-      models.push_back(jacobianModel(i, j));
-    }
-  }
+  };
+  add(elasticForms().size(), dampingForms().size(), forceModel);
+  add(dfdxForms().size(), dfdvForms().size(), jacobianModel);
   return models;
 }
 
