@@ -19,6 +19,23 @@ using harness::SimulateResult;
 
 namespace {
 
+// Runs r's frames, each n substeps step(dt) of dt = frameDt / n (n = 1 when r steps once a frame),
+// and gives `particles` after every recordEvery-th frame and the last (task 7's too).
+template <class Step>
+SimulateResult run(const SimulateRequest& r, const std::vector<Particle>& particles, Step step) {
+  SimulateResult out;
+  const int every = std::max(1, r.recordEvery);
+  const int substeps = r.stepOnly ? 1 : std::max(1, r.substeps);
+  for (int frame = 1; frame <= r.frames; ++frame) {
+    for (int k = 0; k < substeps; ++k) step(r.frameDt / substeps);
+    if (frame % every == 0 || frame == r.frames) {
+      out.recordedFrames.push_back(frame);
+      out.states.push_back(particles);
+    }
+  }
+  return out;
+}
+
 struct System {
   std::vector<Particle> particles;
   std::vector<SpringData> springs;
@@ -63,18 +80,8 @@ std::optional<SimulateResult> simulate(const SimulateRequest& r, const StepForm&
     if (d.i < 0 || d.j < 0 || d.i >= n || d.j >= n) return std::nullopt;
   }
   System s{r.particles, r.springs, r.env};
-  SimulateResult out;
-  const int every = std::max(1, r.recordEvery);
-  const int substeps = r.stepOnly ? 1 : std::max(1, r.substeps);
-  const double dt = r.stepOnly || form.substepFullDt ? r.frameDt : r.frameDt / substeps;
-  for (int frame = 1; frame <= r.frames; ++frame) {
-    for (int k = 0; k < substeps; ++k) step(s, dt, form);
-    if (frame % every == 0 || frame == r.frames) {
-      out.recordedFrames.push_back(frame);
-      out.states.push_back(s.particles);
-    }
-  }
-  return out;
+  return run(r, s.particles,
+             [&](double dt) { step(s, form.substepFullDt ? r.frameDt : dt, form); });
 }
 
 // Task 5 -----------------------------------------------------------------------------------------
@@ -196,17 +203,7 @@ std::optional<SimulateResult> simulateImplicit(const SimulateRequest& r, const I
     if (d.i < 0 || d.j < 0 || d.i >= n || d.j >= n || d.i == d.j) return std::nullopt;
   }
   std::vector<Particle> ps = r.particles;
-  SimulateResult out;
-  const int every = std::max(1, r.recordEvery);
-  const int substeps = r.stepOnly ? 1 : std::max(1, r.substeps);
-  for (int frame = 1; frame <= r.frames; ++frame) {
-    for (int k = 0; k < substeps; ++k) step(ps, r.springs, r.env, r.frameDt / substeps, form);
-    if (frame % every == 0 || frame == r.frames) {
-      out.recordedFrames.push_back(frame);
-      out.states.push_back(ps);
-    }
-  }
-  return out;
+  return run(r, ps, [&](double dt) { step(ps, r.springs, r.env, dt, form); });
 }
 
 }  // namespace a6::grader::mistakes
