@@ -74,8 +74,8 @@ std::vector<Likeness> judgeEach(const Exchanges& exchanges, Reference reference,
 
 /// The catalogue models of task `task` written from one function answer(request, flaw) (a
 /// std::optional, empty where it cannot answer): gives model(id, flaw, text), judged on every
-/// request of kind R, the flaw's answer beside the reference's, answer(request, Flaw{}) (every
-/// Flaw's first value is None).
+/// request of kind R, the flaw's answer beside the reference's, answer(request, Flaw{}) (Flaw{}:
+/// each Flaw's first value, None, or false).
 template <class R, class Flaw, class Answer, class Same>
 auto flawModels(int task, Answer answer, Same same) {
   return [task, answer, same](const char* id, Flaw flaw, const char* text) {

@@ -19,10 +19,10 @@ Vec2 springForce(const SpringForceRequest& r, bool guarded) {
   return -r.ks * (l - r.restLength) * e - r.kd * (r.p2.v - r.p1.v).dot(e) * e;
 }
 
-// The answer as the checks get it.
-std::optional<harness::SpringForceResult> answer(const SpringForceRequest& r, bool guarded) {
+// The answer as the checks get it, with or without (`unguarded`) the guard.
+std::optional<harness::SpringForceResult> answer(const SpringForceRequest& r, bool unguarded) {
   harness::SpringForceResult out;
-  out.force = springForce(r, guarded);
+  out.force = springForce(r, !unguarded);
   return out;
 }
 
@@ -33,17 +33,11 @@ bool same(const harness::SpringForceResult& a, const harness::SpringForceResult&
 }  // namespace
 
 std::vector<MistakeModel> task1Mistakes() {
-  auto judge = [](const Transcript& t) {
-    return judgeEach(
-        t.of<harness::SpringForceRequest>(),
-        [](const SpringForceRequest& r) { return answer(r, true); },
-        [](const SpringForceRequest& r) { return answer(r, false); }, same);
-  };
-  return {MistakeModel{
-      "t1_nan_for_coincident_particles", 1,
-      "Your spring force behaves exactly like one with no guard for coincident particles: "
-      "when l = 0, e = d / l is NaN; return a zero force when l is below a small epsilon.",
-      judge}};
+  const auto model = flawModels<SpringForceRequest, bool>(1, answer, same);
+  return {
+      model("t1_nan_for_coincident_particles", true,
+            "Your spring force behaves exactly like one with no guard for coincident particles: "
+            "when l = 0, e = d / l is NaN; return a zero force when l is below a small epsilon.")};
 }
 
 }  // namespace a6::grader::mistakes
