@@ -7,7 +7,8 @@ find_package(CLI11 REQUIRED)
 add_library(a6_batch_core STATIC ${CMAKE_CURRENT_SOURCE_DIR}/batch/layouts.cpp
                                  ${CMAKE_CURRENT_SOURCE_DIR}/batch/batch.cpp)
 target_include_directories(a6_batch_core PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-pkg_check_modules(YAMLCPP REQUIRED IMPORTED_TARGET yaml-cpp)  # submission_metadata.yml
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(YAMLCPP REQUIRED IMPORTED_TARGET yaml-cpp>=0.7)  # submission_metadata.yml
 target_link_libraries(a6_batch_core PRIVATE nlohmann_json::nlohmann_json PkgConfig::YAMLCPP)
 target_compile_options(a6_batch_core PRIVATE ${A6_WARNINGS})
 

@@ -1,5 +1,6 @@
 // The time one grading may take: its build's, the student's code's and the grader's own. Read by
-// the build (build/), the checks (checks/) and the tests that hold a grading to them.
+// the build (build/), the checks (checks/) and the tests that hold a grading to them; in
+// grading/, the stage that runs the others, since the bound is the whole grading's.
 #pragma once
 
 namespace a6::grader {
@@ -9,7 +10,9 @@ namespace a6::grader {
 /// starter's stub.
 constexpr double kDefaultBuildBudget = 150;
 
-/// The link gets at least this much more than what is left of the build's budget, s.
+/// Each link gets at least this much, s, even when the build's budget is spent (a build links its
+/// two probes, and again for a link the machine ended or a file that keeps the probe from
+/// starting).
 constexpr double kLinkAllowance = 10;
 
 /// The time the student's code may take over all checks together (--time-budget), s: well
@@ -17,14 +20,16 @@ constexpr double kLinkAllowance = 10;
 /// with a 0.
 constexpr double kDefaultTimeBudget = 420;
 
-/// The grader's own work in one grading, s: intake, starting the probe, its side of the checks,
-/// naming the mistakes, the replays, the report. Seconds on an idle machine; this much beside
-/// CI's load (other graders, builds and CPU hogs on every core).
+/// The grader's own work in one grading, s: intake, the links past the budget, the start-up
+/// checks (build/startup.h: a few runs of 5 s, only for a program that does not start), its
+/// side of the checks, naming the mistakes, the replays, the report. Seconds on an idle machine
+/// (Gradescope's run_autograder allows 30: TIME_LIMIT is the build's budget, TIME_BUDGET and
+/// 30 s); this much beside CI's load (other graders, builds and CPU hogs on every core).
 constexpr double kOwnWorkSeconds = 120;
 
-/// The wall time a grading never exceeds, whatever the code does, s: the build's budget and the
-/// link's allowance, the student's `timeBudget`, and the grader's own work. (The hostile ctests
-/// hold every grading to it.)
+/// The wall time of a grading, whatever the code does, s: the build's budget and a link's
+/// allowance, the student's `timeBudget`, and the grader's own work as loaded as CI's. The
+/// hostile ctests hold every grading to it.
 constexpr double maxGradingSeconds(double timeBudget) {
   return kDefaultBuildBudget + kLinkAllowance + timeBudget + kOwnWorkSeconds;
 }

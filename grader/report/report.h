@@ -38,7 +38,7 @@ struct GradeReport {
   double maxScore = 0;       ///< the rubric's total (extra credit not included)
   double extraCredit = 0;    ///< the part of `score` earned by extra-credit items
   double seconds = 0;        ///< the whole grading's wall time
-  double buildSeconds = 0;   ///< the build stage's (within its budget, grading/budgets.h)
+  double buildSeconds = 0;   ///< the build stage's (its budget, the links and start-up checks)
   double checksSeconds = 0;  ///< the checks stage's (within --time-budget and what ends a check)
   double peakRssMiB = 0;     ///< the grader's own peak memory (not its children's)
   std::string probeOutput;   ///< capped; shown to instructors only

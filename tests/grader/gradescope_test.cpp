@@ -11,7 +11,6 @@
 // grader's files, with and without the mount namespace Docker may refuse (Gradescope's
 // containers): setup.sh's file permissions must then protect them.
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -51,14 +50,6 @@ std::string quote(const std::string& s) {
 std::string quote(const fs::path& p) { return quote(p.string()); }
 
 Outcome run(const std::string& command) { return a6::test::runCommand(command); }
-
-// CPU time of every child process reaped so far (and of theirs), s.
-double childCpuSeconds() {
-  rusage usage{};
-  getrusage(RUSAGE_CHILDREN, &usage);
-  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-         static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
-}
 
 std::string readAll(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -397,10 +388,10 @@ TEST(Gradescope, SetupBuildsTheGraderFromScratchInUnderFiveMinutes) {
   // wall-clock time on a machine whose two cores others share says more about them than about
   // the build. 300 CPU seconds are under 3 minutes on 2 idle cores; building more than
   // a6_grade and its kit (every test binary, say) takes several times that.
-  const double cpuBefore = childCpuSeconds();
+  const double cpuBefore = a6::test::childrenCpuSeconds();
   const Outcome setup = run("cd " + quote(p.root) + " && env A6_AUTOGRADER_ROOT=" + quote(p.root) +
                             " A6_SKIP_APT=1 bash " + quote(p.root / "source" / "setup.sh"));
-  const double cpu = childCpuSeconds() - cpuBefore;
+  const double cpu = a6::test::childrenCpuSeconds() - cpuBefore;
   report("setup.sh (configure, build a6_grade and its kit, smoke check)", setup.seconds);
   report("setup.sh, CPU time (user + system)", cpu);
   ASSERT_EQ(setup.status, 0) << tail(setup.output);
