@@ -93,6 +93,10 @@ constexpr const char* kLog = "grade.log";
 volatile std::sig_atomic_t gSignal = 0;
 extern "C" void onSignal(int signo) { gSignal = signo; }
 
+const char* signalName(int signo) {
+  return signo == SIGINT ? "SIGINT (Ctrl-C)" : signo == SIGTERM ? "SIGTERM" : "SIGHUP";
+}
+
 // Seconds between two sweeps for strays: 1, or A6_BATCH_SWEEP_SECONDS (the tests set it tiny, to
 // provoke a sweep between a child's exit and its reaping).
 double sweepInterval() {
@@ -157,7 +161,14 @@ class Batch {
     } catch (const std::exception& e) {
       notes_.push_back(std::string("insights.html was not written: ") + e.what());
     }
-    return summary(secondsSince(start), jobs_);
+    const int status = summary(secondsSince(start), jobs_);
+    if (gSignal == 0 || !o_.similarity) return status;  // a late signal found the work done
+    std::fprintf(stderr,
+                 "a6_batch: stopped by %s during the similarity: the gradebook is complete, and "
+                 "insights.html says what was not compared.\n"
+                 "To compare, run the same command again: what was graded is skipped.\n",
+                 signalName(static_cast<int>(gSignal)));
+    return 128 + static_cast<int>(gSignal);
   }
 
  private:
@@ -406,7 +417,8 @@ class Batch {
       }
       const fs::path work = out_ / ".similarity";
       const auto staged = insights::stageSubmissions(all, work / "files", notes);
-      report = insights::compareSubmissions(staged, o_.starter, work / "compare");
+      report = insights::compareSubmissions(staged, o_.starter, work / "compare",
+                                            [] { return gSignal != 0; });
       report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
       if (!o_.keepWork) fs::remove_all(work, ec);
       input.similarity = &report;
@@ -451,10 +463,8 @@ class Batch {
                  "a6_batch: stopped by %s: %zu of %zu submissions have a grade (in %s); %zu "
                  "running gradings were stopped.\n"
                  "To grade the rest, run the same command again: what was graded is skipped.\n",
-                 signo == SIGINT    ? "SIGINT (Ctrl-C)"
-                 : signo == SIGTERM ? "SIGTERM"
-                                    : "SIGHUP",
-                 graded, inv_.submissions.size(), (out_ / "gradebook.csv").c_str(), stopped);
+                 signalName(signo), graded, inv_.submissions.size(),
+                 (out_ / "gradebook.csv").c_str(), stopped);
     return 128 + signo;
   }
 

@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
                       "(a6_batch --similarity compares a batch's submissions)");
     }
     const auto staged = stageSubmissions(exported, work / "files", notes);
-    report = compareSubmissions(staged, starter, work / "compare", threshold);
+    report = compareSubmissions(staged, starter, work / "compare", {}, threshold);
     report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
     fs::remove_all(work, ec);
     input.similarity = &report;

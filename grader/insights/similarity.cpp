@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -56,8 +57,9 @@ bool isCode(const std::string& line) {
   return !t.empty() && t.rfind("//", 0) != 0 && t.rfind("/*", 0) != 0 && t.rfind("*", 0) != 0;
 }
 
-// Runs sim_c++ with `args`, what it prints into `out`; true when it ran to the end in time.
-bool runTool(const std::vector<std::string>& args, const fs::path& out) {
+// Runs sim_c++ with `args`, what it prints into `out`; true when it ran to the end in time and
+// was not stopped.
+bool runTool(const std::vector<std::string>& args, const fs::path& out, const StopAsked& stop) {
   std::vector<char*> argv;
   std::vector<std::string> all = {kTool};
   all.insert(all.end(), args.begin(), args.end());
@@ -82,7 +84,11 @@ bool runTool(const std::vector<std::string>& args, const fs::path& out) {
     _exit(127);
   }
   if (pid < 0) return false;
-  std::optional<int> status = process::waitFor(pid, kToolSeconds);
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<int> status;
+  while (!(status = process::waitFor(pid, 0.2)) && process::secondsSince(start) < kToolSeconds &&
+         !(stop && stop())) {
+  }
   if (!status) {
     kill(pid, SIGKILL);
     status = process::waitFor(pid, 5);
@@ -93,7 +99,7 @@ bool runTool(const std::vector<std::string>& args, const fs::path& out) {
 // sim_c++ -v: "Version 3.0.2 ...": the tool's name and version; "" when it does not run.
 std::string toolVersion(const fs::path& work) {
   const fs::path out = work / "version.txt";
-  if (!runTool({"-v"}, out)) return "";
+  if (!runTool({"-v"}, out, {})) return "";
   const std::vector<std::string> lines = linesOf(readAll(out));
   return std::string(kTool) + " (Debian's similarity-tester" +
          (lines.empty() ? std::string(")") : ", " + trimmed(lines.front()) + ")");
@@ -228,10 +234,12 @@ SimilarPair pairOf(const std::vector<SubmissionFiles>& subs, const std::vector<P
   return p;
 }
 
-void compareTaskFile(const std::vector<SubmissionFiles>& subs, const fs::path& starter,
-                     const fs::path& work, const std::string& taskFile, SimilarityReport& report) {
+// False when `stop` ended the comparison before its end.
+bool compareTaskFile(const std::vector<SubmissionFiles>& subs, const fs::path& starter,
+                     const fs::path& work, const std::string& taskFile, SimilarityReport& report,
+                     const StopAsked& stop) {
   std::vector<Prepared> files = prepare(subs, starter, taskFile, report.notes);
-  if (files.size() < 2) return;
+  if (files.size() < 2) return true;
   const fs::path dir = work / taskFile;
   fs::create_directories(dir);
   std::vector<std::string> args = {"-r", std::to_string(report.minimumRun), "-e", "-s", "-n"};
@@ -240,9 +248,10 @@ void compareTaskFile(const std::vector<SubmissionFiles>& subs, const fs::path& s
     args.push_back((dir / (std::to_string(i) + ".cpp")).string());
   }
   report.compared += static_cast<int>(files.size());
-  if (!runTool(args, dir / "report.txt")) {
+  if (!runTool(args, dir / "report.txt", stop)) {
+    if (stop && stop()) return false;
     report.notes.push_back(taskFile + ": " + kTool + " failed or ran out of time: not compared");
-    return;
+    return true;
   }
   const std::vector<Run> runs = parseRuns(readAll(dir / "report.txt"));
   const Cover cover = coverOf(files, runs);
@@ -257,13 +266,14 @@ void compareTaskFile(const std::vector<SubmissionFiles>& subs, const fs::path& s
           pairOf(subs, files, runs, i, j, taskFile, static_cast<int>(100 * share + 0.5)));
     }
   }
+  return true;
 }
 
 }  // namespace
 
 SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissions,
-                                    const fs::path& starter, const fs::path& work, int threshold,
-                                    int minimumRun) {
+                                    const fs::path& starter, const fs::path& work,
+                                    const StopAsked& stop, int threshold, int minimumRun) {
   SimilarityReport report;
   report.threshold = threshold;
   report.minimumRun = minimumRun;
@@ -279,7 +289,12 @@ SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissi
   }
   for (const std::string& taskFile : kTaskFiles) {
     try {
-      compareTaskFile(submissions, starter, work, taskFile, report);
+      if ((stop && stop()) ||
+          !compareTaskFile(submissions, starter, work, taskFile, report, stop)) {
+        report.notes.push_back("the comparison was stopped (a signal) at " + taskFile +
+                               ": it and the task files after it were not compared");
+        break;
+      }
     } catch (const std::exception& e) {
       report.notes.push_back(taskFile + ": " + e.what());
     }

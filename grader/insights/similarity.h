@@ -15,6 +15,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,12 +62,16 @@ std::vector<SubmissionFiles> stageSubmissions(
 /// A share of the class (the pair left out) above which a shared line is common, not evidence.
 inline constexpr double kCommonShare = 0.34;
 
+/// Asked often while the comparison runs: true to stop it (a6_batch's Ctrl-C).
+using StopAsked = std::function<bool()>;
+
 /// Compares every pair of submissions task file by task file. `starter`: the folder of the
-/// starter files; `work`: a scratch folder (emptied). Never throws; a missing tool or an
+/// starter files; `work`: a scratch folder (emptied); `stop` (may be empty) ends it early, with
+/// a note saying which task files were not compared. Never throws; a missing tool or an
 /// unreadable file is a note.
 SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissions,
                                     const std::filesystem::path& starter,
-                                    const std::filesystem::path& work, int threshold = 60,
-                                    int minimumRun = 20);
+                                    const std::filesystem::path& work, const StopAsked& stop = {},
+                                    int threshold = 60, int minimumRun = 20);
 
 }  // namespace a6::grader::insights

@@ -10,6 +10,7 @@ target_include_directories(a6_process PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_compile_options(a6_process PRIVATE ${A6_WARNINGS})
 
 add_library(a6_sandbox STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/sandbox.cpp
+                              ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/output.cpp
                               ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/plan.cpp
                               ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/child.cpp
                               ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/filter.cpp)

@@ -28,6 +28,7 @@
 #include <mutex>
 #include <thread>
 
+#include "sandbox/output.h"
 #include "sandbox/plan.h"
 #include "sandbox/process.h"
 
@@ -48,41 +49,6 @@ std::string formatSeconds(double s) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", s);
   return text;
-}
-
-// ---- captured output ----------------------------------------------------------------------------
-
-struct Sink {
-  mutable std::mutex mutex;
-  std::string data;
-  std::size_t cap = 0;
-  bool truncated = false;
-
-  void add(const char* bytes, std::size_t n) {
-    std::lock_guard<std::mutex> lock(mutex);
-    const std::size_t room = cap > data.size() ? cap - data.size() : 0;
-    data.append(bytes, std::min(room, n));
-    if (n > room) truncated = true;
-  }
-  std::string text() const {
-    std::lock_guard<std::mutex> lock(mutex);
-    return data;
-  }
-};
-
-// Reads what is there; false at end of stream or on a hard error.
-bool readSome(int fd, Sink& sink) {
-  char buffer[65536];
-  for (;;) {
-    const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n > 0) {
-      sink.add(buffer, static_cast<std::size_t>(n));
-      continue;
-    }
-    if (n == 0) return false;
-    if (errno == EINTR) continue;
-    return errno == EAGAIN || errno == EWOULDBLOCK;
-  }
 }
 
 // A started child: its pid, its output pipe, and what the setup said.
@@ -325,32 +291,28 @@ Exit runSandboxed(const SandboxSpec& spec) {
   const int pidFd = static_cast<int>(syscall(SYS_pidfd_open, s.pid, 0));
   bool ended = false, timedOut = false, outOpen = true;
   int status = 0;
-  Clock::time_point graceEnd{};
-  for (;;) {
-    if (!ended && hasEnded(s.pid)) {
+  while (!ended) {
+    if (hasEnded(s.pid)) {
       ended = true;
       status = killAndReap(s.pid, &exit.cpuSeconds);  // stragglers of its group go too
-      graceEnd = Clock::now() + std::chrono::milliseconds(500);
-    }
-    if (!ended && Clock::now() >= deadline) {
-      timedOut = true;
-      ended = true;
+    } else if (Clock::now() >= deadline) {
+      ended = timedOut = true;
       status = killAndReap(s.pid);
-      graceEnd = Clock::now() + std::chrono::milliseconds(500);
+    } else {
+      // Wait for output, the child's end (pidfd), or the deadline.
+      pollfd pfds[2];
+      nfds_t n = 0;
+      if (outOpen) pfds[n++] = {s.outFd, POLLIN, 0};
+      if (pidFd >= 0) pfds[n++] = {pidFd, POLLIN, 0};
+      long long wait =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count() +
+          1;
+      if (pidFd < 0) wait = std::min(wait, 5LL);  // no pidfd: poll the child
+      poll(pfds, n, static_cast<int>(std::clamp(wait, 0LL, 1000LL)));
+      if (outOpen && !readSome(s.outFd, sink)) outOpen = false;
     }
-    if (ended && (!outOpen || Clock::now() >= graceEnd)) break;
-    // Wait for output, the child's end (pidfd), or the next check.
-    pollfd pfds[2];
-    nfds_t n = 0;
-    if (outOpen) pfds[n++] = {s.outFd, POLLIN, 0};
-    if (!ended && pidFd >= 0) pfds[n++] = {pidFd, POLLIN, 0};
-    const auto until = ended ? graceEnd : deadline;
-    long long wait =
-        std::chrono::duration_cast<std::chrono::milliseconds>(until - Clock::now()).count() + 1;
-    if (pidFd < 0 && !ended) wait = std::min(wait, 5LL);  // no pidfd: poll the child
-    poll(pfds, n, static_cast<int>(std::clamp(wait, 0LL, 1000LL)));
-    if (outOpen && !readSome(s.outFd, sink)) outOpen = false;
   }
+  if (outOpen) readAfterEnd(s.outFd, sink, Clock::now() + std::chrono::milliseconds(500));
   if (pidFd >= 0) ::close(pidFd);
   ::close(s.outFd);
   status = programStatus(s.endFd, status);
@@ -410,17 +372,14 @@ SandboxedProcess::SandboxedProcess(const SandboxSpec& spec) : state_(new State) 
   // Drains the output until its end, or shortly after stop() (a process that escaped the group
   // could hold the pipe open forever).
   state_->drainer = std::thread([state] {
-    Clock::time_point graceEnd{};
-    for (;;) {
+    bool open = true;
+    while (open && !state->stopping.load()) {
       pollfd pfd{state->outFd, POLLIN, 0};
       poll(&pfd, 1, 50);
-      if (!readSome(state->outFd, state->sink)) break;
-      if (state->stopping.load()) {
-        if (graceEnd == Clock::time_point{})
-          graceEnd = Clock::now() + std::chrono::milliseconds(300);
-        if (Clock::now() >= graceEnd) break;
-      }
+      open = readSome(state->outFd, state->sink);
     }
+    if (open)
+      readAfterEnd(state->outFd, state->sink, Clock::now() + std::chrono::milliseconds(300));
   });
 }
 

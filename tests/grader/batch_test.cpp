@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -863,6 +864,48 @@ TEST(Batch, SigtermStopsTheGradingsAndSaysHowToResume) {
   EXPECT_EQ(g.error, "");
   EXPECT_EQ(static_cast<int>(g.rows.size()), markers(out)) << "a row per graded submission";
   for (const auto& row : g.rows) EXPECT_EQ(row.at("status"), "graded") << describe(row);
+}
+
+// Ctrl-C while the similarity runs (sim_c++ may take minutes on a class): the comparison stops
+// at once, the page says what was not compared, and the message says how to finish. A fake
+// grader (instant) and a fake sim_c++ (it hangs, after leaving a mark) play the parts.
+TEST(Batch, CtrlCDuringTheSimilarityStopsItAndSaysWhatWasNotCompared) {
+  const fs::path dir = caseDir("sigint_similarity");
+  const fs::path in = dir / "submissions", out = dir / "out", bin = dir / "bin";
+  for (const char* name : {"a", "b"}) {
+    writeAll(in / name / "spring.cpp", readAll(kSource / "solution" / "spring.cpp"));
+  }
+  writeAll(dir / "fake_grade.sh", R"SH(#!/bin/sh
+mkdir -p "$3"; echo '{"score": 1, "tests": [], "extra_data": {"errors": []}}' > "$3/results.json"
+)SH");
+  const std::string sim = R"SH(#!/bin/sh
+[ "$1" = -v ] && { echo 'Version 3.0.2 (a fake)'; exit 0; }
+touch 'MARK'; exec sleep 419
+)SH";
+  writeAll(bin / "sim_c++",
+           a6::test::staging::replaceAll(sim, "MARK", (dir / "comparing").string()));
+  for (const fs::path& p : {dir / "fake_grade.sh", bin / "sim_c++"})
+    fs::permissions(p, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+  const std::string path = std::getenv("PATH");
+  setenv("PATH", (bin.string() + ":" + path).c_str(), 1);
+  const pid_t pid = startBatch(in, out, dir / "log",
+                               {"--similarity", "--grader", (dir / "fake_grade.sh").string()});
+  setenv("PATH", path.c_str(), 1);
+  for (int i = 0; i < 6000 && !fs::exists(dir / "comparing"); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ASSERT_TRUE(fs::exists(dir / "comparing")) << readAll(dir / "log");
+  kill(pid, SIGINT);
+  int raw = 0;
+  waitpid(pid, &raw, 0);
+  const std::string log = readAll(dir / "log");
+  ASSERT_TRUE(WIFEXITED(raw)) << log;
+  EXPECT_EQ(WEXITSTATUS(raw), 128 + SIGINT) << log;
+  EXPECT_NE(log.find("stopped by SIGINT (Ctrl-C) during the similarity"), std::string::npos) << log;
+  EXPECT_NE(log.find("run the same command again"), std::string::npos) << log;
+  EXPECT_EQ(readGradebook(out / "gradebook.csv").rows.size(), 2u) << "the gradebook is complete";
+  EXPECT_NE(readAll(out / "insights.html").find("the comparison was stopped"), std::string::npos);
+  expectNoProcessMentioning("sleep 419");
 }
 
 // A grading that hangs is killed at --timeout (with what it started), one that crashes or fails

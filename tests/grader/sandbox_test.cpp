@@ -14,14 +14,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include "sandbox/output.h"
 #include "sandbox/process.h"
 
 namespace a6::grader {
@@ -440,6 +443,43 @@ TEST(SandboxedProcess, AFailedStartSaysWhy) {
   EXPECT_NE(process.error().find("No such file"), std::string::npos) << process.error();
   EXPECT_FALSE(process.alive());
   EXPECT_EQ(process.stop().kind, Exit::Kind::FailedToStart);
+}
+
+// The output pipe after the program ended. A grader held up by the load may come to read it only
+// after the grace has passed: what the program wrote is still all there.
+TEST(SandboxOutput, WhatThePipeHoldsIsReadEvenAfterTheGrace) {
+  int fds[2];
+  ASSERT_EQ(pipe2(fds, O_NONBLOCK), 0);
+  const std::string text(60000, 'x');  // under the pipe's 64 KiB
+  ASSERT_EQ(write(fds[1], text.data(), text.size()), static_cast<ssize_t>(text.size()));
+  sandboxing::Sink sink;
+  sink.cap = 1 << 20;
+  // The write end stays open, as a process that escaped the group would hold it.
+  sandboxing::readAfterEnd(fds[0], sink, Clock::now() - std::chrono::seconds(1));
+  EXPECT_EQ(sink.text().size(), text.size());
+  EXPECT_FALSE(sink.truncated);
+  close(fds[0]);
+  close(fds[1]);
+}
+
+TEST(SandboxOutput, AWriterThatNeverStopsCannotHoldTheReader) {
+  int fds[2];
+  ASSERT_EQ(pipe2(fds, O_NONBLOCK), 0);
+  std::atomic<bool> done{false};
+  std::thread writer([&] {
+    const std::string chunk(4096, 'y');
+    while (!done.load()) (void)!write(fds[1], chunk.data(), chunk.size());
+  });
+  sandboxing::Sink sink;
+  sink.cap = 1000;
+  // It returns (a reader held forever would time the test out), with what the cap keeps.
+  sandboxing::readAfterEnd(fds[0], sink, Clock::now() + std::chrono::milliseconds(200));
+  done = true;
+  writer.join();
+  EXPECT_EQ(sink.text().size(), 1000u);
+  EXPECT_TRUE(sink.truncated);
+  close(fds[0]);
+  close(fds[1]);
 }
 
 }  // namespace
