@@ -162,12 +162,14 @@ class Batch {
       notes_.push_back(std::string("insights.html was not written: ") + e.what());
     }
     const int status = summary(secondsSince(start), jobs_);
-    if (gSignal == 0 || !o_.similarity) return status;  // a late signal found the work done
+    if (!similarityStopped_) return status;  // a later signal found the work done
+    // A Canvas upload graded by an earlier run is not staged again (writeInsightsPage).
     std::fprintf(stderr,
                  "a6_batch: stopped by %s during the similarity: the gradebook is complete, and "
                  "insights.html says what was not compared.\n"
-                 "To compare, run the same command again: what was graded is skipped.\n",
-                 signalName(static_cast<int>(gSignal)));
+                 "To compare, run the same command again%s: what was graded is skipped.\n",
+                 signalName(static_cast<int>(gSignal)),
+                 inv_.layout == Layout::Canvas ? " with --force (a Canvas download)" : "");
     return 128 + static_cast<int>(gSignal);
   }
 
@@ -421,6 +423,7 @@ class Batch {
                                             [] { return gSignal != 0; });
       report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
       if (!o_.keepWork) fs::remove_all(work, ec);
+      similarityStopped_ = report.stopped;
       input.similarity = &report;
     }
     if (const std::string e = insights::writeInsights(out_, out_ / "insights.html", input);
@@ -580,6 +583,7 @@ class Batch {
   std::vector<double> ranSeconds_;  // wall-clock seconds of each grading of this run
   std::vector<bool> skipped_;       // graded by an earlier run, unchanged
   std::vector<std::string> notes_;
+  bool similarityStopped_ = false;  // a signal ended the comparison before its end
   std::vector<std::size_t> queue_;  // what is to be graded, in order (a grader error: again)
   std::set<std::size_t> regraded_;  // queued again after a grader error (once each)
 };

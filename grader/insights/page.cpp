@@ -330,7 +330,8 @@ void similaritySection(std::ostringstream& out, const SimilarityReport* r) {
          "shared rare code covers at least "
       << r->threshold << " % of one file's own code (at least 4 lines):</p>\n";
   for (const std::string& n : r->notes) out << "<p class=\"note\">" << htmlEscape(n) << "</p>\n";
-  if (r->pairs.empty()) out << "<p class=\"note\">No pair above the threshold.</p>\n";
+  if (r->pairs.empty() && !r->stopped)
+    out << "<p class=\"note\">No pair above the threshold.</p>\n";
   for (const SimilarPair& p : r->pairs) {
     out << "<div class=\"pair\"><p><b>" << htmlEscape(p.a) << "</b> and <b>" << htmlEscape(p.b)
         << "</b>: <code>" << htmlEscape(p.taskFile) << "</code>, " << p.percent << " %</p>\n";

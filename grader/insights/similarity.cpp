@@ -57,6 +57,16 @@ bool isCode(const std::string& line) {
   return !t.empty() && t.rfind("//", 0) != 0 && t.rfind("/*", 0) != 0 && t.rfind("*", 0) != 0;
 }
 
+// The tool's wait status; none when it ran out of time, `stop` asked, or it vanished.
+std::optional<int> waitUnlessStopped(pid_t pid, const StopAsked& stop) {
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    bool vanished = false;
+    if (const std::optional<int> status = process::waitFor(pid, 0.2, &vanished)) return status;
+    if (vanished || process::secondsSince(start) >= kToolSeconds || (stop && stop())) return {};
+  }
+}
+
 // Runs sim_c++ with `args`, what it prints into `out`; true when it ran to the end in time and
 // was not stopped.
 bool runTool(const std::vector<std::string>& args, const fs::path& out, const StopAsked& stop) {
@@ -84,11 +94,7 @@ bool runTool(const std::vector<std::string>& args, const fs::path& out, const St
     _exit(127);
   }
   if (pid < 0) return false;
-  const auto start = std::chrono::steady_clock::now();
-  std::optional<int> status;
-  while (!(status = process::waitFor(pid, 0.2)) && process::secondsSince(start) < kToolSeconds &&
-         !(stop && stop())) {
-  }
+  std::optional<int> status = waitUnlessStopped(pid, stop);
   if (!status) {
     kill(pid, SIGKILL);
     status = process::waitFor(pid, 5);
@@ -247,12 +253,12 @@ bool compareTaskFile(const std::vector<SubmissionFiles>& subs, const fs::path& s
     std::ofstream(dir / (std::to_string(i) + ".cpp")) << linesText(files[i].blanked, 1, 1 << 30);
     args.push_back((dir / (std::to_string(i) + ".cpp")).string());
   }
-  report.compared += static_cast<int>(files.size());
   if (!runTool(args, dir / "report.txt", stop)) {
     if (stop && stop()) return false;
     report.notes.push_back(taskFile + ": " + kTool + " failed or ran out of time: not compared");
     return true;
   }
+  report.compared += static_cast<int>(files.size());
   const std::vector<Run> runs = parseRuns(readAll(dir / "report.txt"));
   const Cover cover = coverOf(files, runs);
   for (int i = 0; i < static_cast<int>(files.size()); ++i) {
@@ -267,6 +273,14 @@ bool compareTaskFile(const std::vector<SubmissionFiles>& subs, const fs::path& s
     }
   }
   return true;
+}
+
+// "forces.cpp, cloth.cpp, ...": `from` and the task files after it.
+std::string notCompared(const std::string& from) {
+  std::string names;
+  const auto first = std::find(kTaskFiles.begin(), kTaskFiles.end(), from);
+  for (auto it = first; it != kTaskFiles.end(); ++it) names += (names.empty() ? "" : ", ") + *it;
+  return names;
 }
 
 }  // namespace
@@ -289,10 +303,11 @@ SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissi
   }
   for (const std::string& taskFile : kTaskFiles) {
     try {
-      if ((stop && stop()) ||
-          !compareTaskFile(submissions, starter, work, taskFile, report, stop)) {
-        report.notes.push_back("the comparison was stopped (a signal) at " + taskFile +
-                               ": it and the task files after it were not compared");
+      report.stopped =
+          (stop && stop()) || !compareTaskFile(submissions, starter, work, taskFile, report, stop);
+      if (report.stopped) {
+        report.notes.push_back("the comparison was stopped before its end: " +
+                               notCompared(taskFile) + " not compared");
         break;
       }
     } catch (const std::exception& e) {

@@ -43,6 +43,7 @@ struct SimilarityReport {
   int compared = 0;                ///< files compared, over all task files
   std::vector<SimilarPair> pairs;  ///< highest percent first
   std::vector<std::string> notes;  ///< what could not be compared, and why
+  bool stopped = false;            ///< asked to stop before the last task file was compared
 };
 
 /// A submission's files for the comparison: its key and the folder (or staged copy) holding

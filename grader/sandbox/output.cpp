@@ -22,8 +22,8 @@ std::string Sink::text() const {
 }
 
 bool readSome(int fd, Sink& sink) {
-  char buffer[65536];
-  for (int reads = 0; reads < 64; ++reads) {
+  char buffer[kReadChunk];
+  for (std::size_t reads = 0; reads < kReadsPerCall; ++reads) {
     const ssize_t n = ::read(fd, buffer, sizeof buffer);
     if (n > 0) {
       sink.add(buffer, static_cast<std::size_t>(n));

@@ -10,7 +10,8 @@
 
 namespace a6::grader::sandboxing {
 
-// What was read, up to `cap` bytes; the rest is counted as truncated. Thread-safe.
+// What was read, up to `cap` bytes; the rest is counted as truncated. add() and text() may be
+// called from two threads (the drainer and its owner); `truncated` is read once reading is over.
 struct Sink {
   mutable std::mutex mutex;
   std::string data;
@@ -21,14 +22,17 @@ struct Sink {
   std::string text() const;
 };
 
-// Reads what the pipe holds now, at most a few MiB (a writer that never stops cannot keep the
-// reader here); false at end of stream or on a hard error.
+// What one readSome() reads at most: a writer that never stops cannot keep the reader there.
+inline constexpr std::size_t kReadChunk = 64 << 10, kReadsPerCall = 64;  // 4 MiB
+
+// Reads what the pipe holds now, at most kReadsPerCall chunks; false at end of stream or on a
+// hard error.
 bool readSome(int fd, Sink& sink);
 
 // After the program ended: reads everything its processes left in the pipe, and waits for the
 // pipe's end (a process that escaped could hold it open forever) until `graceEnd`. What is
-// already in the pipe is read even when `graceEnd` has passed: a grader held up by the load
-// never loses output the program wrote.
+// already in the pipe (64 KiB by default) is read even when `graceEnd` has passed: a grader
+// held up by the load does not lose what the program wrote.
 void readAfterEnd(int fd, Sink& sink, std::chrono::steady_clock::time_point graceEnd);
 
 }  // namespace a6::grader::sandboxing

@@ -6,6 +6,7 @@
 //   child.cpp   the child between fork and execve, system calls only: its session, namespaces,
 //               mounts, network, limits, fds, user, filter, exec (childMain)
 //   filter.cpp  the seccomp program (filterFor)
+//   output.cpp  the captured output and how the pipe is read (output.h)
 //   sandbox.cpp starting, waiting, ending and capturing (runSandboxed, SandboxedProcess), views
 #pragma once
 

@@ -246,6 +246,27 @@ const char* signalText(int sig) {
   return it == kTexts.end() ? nullptr : it->second;
 }
 
+// Reads the child's output until the child ends (true) or `deadline` passes (false, the child
+// still running); `outOpen` says whether its pipe is still open.
+bool readUntilEnd(pid_t pid, int outFd, Clock::time_point deadline, Sink& sink, bool& outOpen) {
+  const int pidFd = static_cast<int>(syscall(SYS_pidfd_open, pid, 0));
+  bool ended = false;
+  while (!(ended = hasEnded(pid)) && Clock::now() < deadline) {
+    // Wait for output, the child's end (pidfd), or the deadline.
+    pollfd pfds[2];
+    nfds_t n = 0;
+    if (outOpen) pfds[n++] = {outFd, POLLIN, 0};
+    if (pidFd >= 0) pfds[n++] = {pidFd, POLLIN, 0};
+    long long wait =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count() + 1;
+    if (pidFd < 0) wait = std::min(wait, 5LL);  // no pidfd: poll the child
+    poll(pfds, n, static_cast<int>(std::clamp(wait, 0LL, 1000LL)));
+    if (outOpen && !readSome(outFd, sink)) outOpen = false;
+  }
+  if (pidFd >= 0) ::close(pidFd);
+  return ended;
+}
+
 }  // namespace
 
 std::string Exit::describe() const {
@@ -288,32 +309,11 @@ Exit runSandboxed(const SandboxSpec& spec) {
   const auto deadline =
       begin + std::chrono::duration_cast<Clock::duration>(
                   std::chrono::duration<double>(std::max(0.0, spec.limits.wallSeconds)));
-  const int pidFd = static_cast<int>(syscall(SYS_pidfd_open, s.pid, 0));
-  bool ended = false, timedOut = false, outOpen = true;
-  int status = 0;
-  while (!ended) {
-    if (hasEnded(s.pid)) {
-      ended = true;
-      status = killAndReap(s.pid, &exit.cpuSeconds);  // stragglers of its group go too
-    } else if (Clock::now() >= deadline) {
-      ended = timedOut = true;
-      status = killAndReap(s.pid);
-    } else {
-      // Wait for output, the child's end (pidfd), or the deadline.
-      pollfd pfds[2];
-      nfds_t n = 0;
-      if (outOpen) pfds[n++] = {s.outFd, POLLIN, 0};
-      if (pidFd >= 0) pfds[n++] = {pidFd, POLLIN, 0};
-      long long wait =
-          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count() +
-          1;
-      if (pidFd < 0) wait = std::min(wait, 5LL);  // no pidfd: poll the child
-      poll(pfds, n, static_cast<int>(std::clamp(wait, 0LL, 1000LL)));
-      if (outOpen && !readSome(s.outFd, sink)) outOpen = false;
-    }
-  }
+  bool outOpen = true;
+  const bool timedOut = !readUntilEnd(s.pid, s.outFd, deadline, sink, outOpen);
+  // Stragglers of its group go too.
+  int status = timedOut ? killAndReap(s.pid) : killAndReap(s.pid, &exit.cpuSeconds);
   if (outOpen) readAfterEnd(s.outFd, sink, Clock::now() + std::chrono::milliseconds(500));
-  if (pidFd >= 0) ::close(pidFd);
   ::close(s.outFd);
   status = programStatus(s.endFd, status);
   if (timedOut) {

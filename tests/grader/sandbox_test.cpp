@@ -14,14 +14,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "sandbox/output.h"
@@ -462,24 +460,17 @@ TEST(SandboxOutput, WhatThePipeHoldsIsReadEvenAfterTheGrace) {
   close(fds[1]);
 }
 
+// A writer that never stops (here /dev/zero, which always has more) cannot hold the reader: one
+// call reads at most its bound, keeps what the cap allows and says the pipe is still open.
 TEST(SandboxOutput, AWriterThatNeverStopsCannotHoldTheReader) {
-  int fds[2];
-  ASSERT_EQ(pipe2(fds, O_NONBLOCK), 0);
-  std::atomic<bool> done{false};
-  std::thread writer([&] {
-    const std::string chunk(4096, 'y');
-    while (!done.load()) (void)!write(fds[1], chunk.data(), chunk.size());
-  });
+  const int fd = open("/dev/zero", O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  ASSERT_GE(fd, 0);
   sandboxing::Sink sink;
   sink.cap = 1000;
-  // It returns (a reader held forever would time the test out), with what the cap keeps.
-  sandboxing::readAfterEnd(fds[0], sink, Clock::now() + std::chrono::milliseconds(200));
-  done = true;
-  writer.join();
+  EXPECT_TRUE(sandboxing::readSome(fd, sink));
   EXPECT_EQ(sink.text().size(), 1000u);
   EXPECT_TRUE(sink.truncated);
-  close(fds[0]);
-  close(fds[1]);
+  close(fd);
 }
 
 }  // namespace
