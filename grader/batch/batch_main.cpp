@@ -164,12 +164,14 @@ class Batch {
     const int status = summary(secondsSince(start), jobs_);
     if (!similarityStopped_) return status;  // a later signal found the work done
     // A Canvas upload graded by an earlier run is not staged again (writeInsightsPage).
+    const bool canvas = inv_.layout == Layout::Canvas;
     std::fprintf(stderr,
                  "a6_batch: stopped by %s during the similarity: the gradebook is complete, and "
-                 "insights.html says what was not compared.\n"
-                 "To compare, run the same command again%s: what was graded is skipped.\n",
+                 "insights.html says what was not compared.\n%s\n",
                  signalName(static_cast<int>(gSignal)),
-                 inv_.layout == Layout::Canvas ? " with --force (a Canvas download)" : "");
+                 canvas ? "To compare a Canvas download, run the same command again with --force "
+                          "(it stages only the uploads it grades: all are graded again)."
+                        : "To compare, run the same command again: what was graded is skipped.");
     return 128 + static_cast<int>(gSignal);
   }
 

@@ -57,11 +57,11 @@ bool isCode(const std::string& line) {
   return !t.empty() && t.rfind("//", 0) != 0 && t.rfind("/*", 0) != 0 && t.rfind("*", 0) != 0;
 }
 
-// The tool's wait status; none when it ran out of time, `stop` asked, or it vanished.
-std::optional<int> waitUnlessStopped(pid_t pid, const StopAsked& stop) {
+// The tool's wait status; none when it ran out of time, `stop` asked, or it vanished (then its
+// pid may be another process's: not to be killed).
+std::optional<int> waitUnlessStopped(pid_t pid, const StopAsked& stop, bool& vanished) {
   const auto start = std::chrono::steady_clock::now();
   for (;;) {
-    bool vanished = false;
     if (const std::optional<int> status = process::waitFor(pid, 0.2, &vanished)) return status;
     if (vanished || process::secondsSince(start) >= kToolSeconds || (stop && stop())) return {};
   }
@@ -94,8 +94,9 @@ bool runTool(const std::vector<std::string>& args, const fs::path& out, const St
     _exit(127);
   }
   if (pid < 0) return false;
-  std::optional<int> status = waitUnlessStopped(pid, stop);
-  if (!status) {
+  bool vanished = false;
+  std::optional<int> status = waitUnlessStopped(pid, stop, vanished);
+  if (!status && !vanished) {
     kill(pid, SIGKILL);
     status = process::waitFor(pid, 5);
   }
@@ -103,9 +104,9 @@ bool runTool(const std::vector<std::string>& args, const fs::path& out, const St
 }
 
 // sim_c++ -v: "Version 3.0.2 ...": the tool's name and version; "" when it does not run.
-std::string toolVersion(const fs::path& work) {
+std::string toolVersion(const fs::path& work, const StopAsked& stop) {
   const fs::path out = work / "version.txt";
-  if (!runTool({"-v"}, out, {})) return "";
+  if (!runTool({"-v"}, out, stop)) return "";
   const std::vector<std::string> lines = linesOf(readAll(out));
   return std::string(kTool) + " (Debian's similarity-tester" +
          (lines.empty() ? std::string(")") : ", " + trimmed(lines.front()) + ")");
@@ -294,7 +295,13 @@ SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissi
   std::error_code ec;
   fs::remove_all(work, ec);
   fs::create_directories(work, ec);
-  report.tool = toolVersion(work);
+  report.tool = toolVersion(work, stop);
+  if (stop && stop()) {
+    report.stopped = true;
+    report.notes.push_back("the comparison was stopped before its end: " +
+                           notCompared(kTaskFiles.front()) + " not compared");
+    return report;
+  }
   if (report.tool.empty()) {
     report.notes.push_back(std::string(kTool) +
                            " is not installed (Debian's similarity-tester: "

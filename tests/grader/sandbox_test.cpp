@@ -470,6 +470,9 @@ TEST(SandboxOutput, AWriterThatNeverStopsCannotHoldTheReader) {
   EXPECT_TRUE(sandboxing::readSome(fd, sink));
   EXPECT_EQ(sink.text().size(), 1000u);
   EXPECT_TRUE(sink.truncated);
+  // After the end, the grace bounds the wait for the pipe's end: it returns.
+  sandboxing::readAfterEnd(fd, sink, Clock::now() + std::chrono::milliseconds(100));
+  EXPECT_EQ(sink.text().size(), 1000u);
   close(fd);
 }
 
