@@ -63,7 +63,7 @@ std::optional<int> waitUnlessStopped(pid_t pid, const StopAsked& stop, bool& van
   const auto start = std::chrono::steady_clock::now();
   for (;;) {
     if (const std::optional<int> status = process::waitFor(pid, 0.2, &vanished)) return status;
-    if (vanished || process::secondsSince(start) >= kToolSeconds || (stop && stop())) return {};
+    if (vanished || process::secondsSince(start) >= kToolSeconds || stop()) return {};
   }
 }
 
@@ -255,7 +255,7 @@ bool compareTaskFile(const std::vector<SubmissionFiles>& subs, const fs::path& s
     args.push_back((dir / (std::to_string(i) + ".cpp")).string());
   }
   if (!runTool(args, dir / "report.txt", stop)) {
-    if (stop && stop()) return false;
+    if (stop()) return false;
     report.notes.push_back(taskFile + ": " + kTool + " failed or ran out of time: not compared");
     return true;
   }
@@ -276,19 +276,21 @@ bool compareTaskFile(const std::vector<SubmissionFiles>& subs, const fs::path& s
   return true;
 }
 
-// "forces.cpp, cloth.cpp, ...": `from` and the task files after it.
-std::string notCompared(const std::string& from) {
+// The report stopped at task file `from`: it and the task files after it were not compared.
+void stoppedAt(const std::string& from, SimilarityReport& report) {
   std::string names;
   const auto first = std::find(kTaskFiles.begin(), kTaskFiles.end(), from);
   for (auto it = first; it != kTaskFiles.end(); ++it) names += (names.empty() ? "" : ", ") + *it;
-  return names;
+  report.stopped = true;
+  report.notes.push_back("the comparison was stopped before its end: " + names + " not compared");
 }
 
 }  // namespace
 
 SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissions,
                                     const fs::path& starter, const fs::path& work,
-                                    const StopAsked& stop, int threshold, int minimumRun) {
+                                    const StopAsked& stopAsked, int threshold, int minimumRun) {
+  const StopAsked stop = stopAsked ? stopAsked : [] { return false; };
   SimilarityReport report;
   report.threshold = threshold;
   report.minimumRun = minimumRun;
@@ -296,10 +298,8 @@ SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissi
   fs::remove_all(work, ec);
   fs::create_directories(work, ec);
   report.tool = toolVersion(work, stop);
-  if (stop && stop()) {
-    report.stopped = true;
-    report.notes.push_back("the comparison was stopped before its end: " +
-                           notCompared(kTaskFiles.front()) + " not compared");
+  if (stop()) {
+    stoppedAt(kTaskFiles.front(), report);
     return report;
   }
   if (report.tool.empty()) {
@@ -310,11 +310,8 @@ SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissi
   }
   for (const std::string& taskFile : kTaskFiles) {
     try {
-      report.stopped =
-          (stop && stop()) || !compareTaskFile(submissions, starter, work, taskFile, report, stop);
-      if (report.stopped) {
-        report.notes.push_back("the comparison was stopped before its end: " +
-                               notCompared(taskFile) + " not compared");
+      if (stop() || !compareTaskFile(submissions, starter, work, taskFile, report, stop)) {
+        stoppedAt(taskFile, report);
         break;
       }
     } catch (const std::exception& e) {

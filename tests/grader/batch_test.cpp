@@ -34,6 +34,7 @@
 
 #include "report/report.h"
 #include "run_command.h"
+#include "sandbox/process.h"
 #include "scoring/rubric.h"
 #include "staging.h"
 
@@ -227,21 +228,6 @@ pid_t startBatch(const fs::path& input, const fs::path& out, const fs::path& log
     _exit(127);
   }
   return pid;
-}
-
-// The wait status of child `pid` when it ends within `seconds`; otherwise it is killed (none).
-std::optional<int> exitWithin(pid_t pid, double seconds) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  int raw = 0;
-  while (waitpid(pid, &raw, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() >= end) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &raw, 0);
-      return std::nullopt;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return raw;
 }
 
 int markers(const fs::path& out) {
@@ -914,9 +900,13 @@ touch 'MARK'; exec sleep 419
   kill(pid, comparing ? SIGINT : SIGKILL);
   ASSERT_TRUE(comparing) << readAll(dir / "log");
   // At once: sim_c++ alone would take 120 s for each of the task files.
-  const std::optional<int> ended = exitWithin(pid, 60);
+  const std::optional<int> ended = a6::grader::process::waitFor(pid, 60);
   const std::string log = readAll(dir / "log");
-  if (!ended) expectNoProcessMentioning("sleep 419");  // the batch was killed: its tool is not
+  if (!ended) {  // kill it, and the tool it would leave
+    kill(pid, SIGKILL);
+    a6::grader::process::waitFor(pid, 10);
+    expectNoProcessMentioning("sleep 419");
+  }
   ASSERT_TRUE(ended) << "still comparing 60 s after Ctrl-C\n" << log;
   const int raw = *ended;
   ASSERT_TRUE(WIFEXITED(raw)) << log;
