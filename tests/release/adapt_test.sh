@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # An instructor adapts the assignment, and the suite follows (ctest adapt_assignment, label
-# "instructor"). In a copy of the checkout, three adaptations, each by the steps of
+# "instructor"). In a copy of the checkout under a folder of mode 0700 (where a newcomer clones:
+# /root or a home folder, which the sandbox's user cannot pass), by the steps of
 # docs/instructor.md's "Adapting the assignment" and nothing else:
 #
+#  0. the jobs' refusals: a rubric that does not add up stops before anything is graded, with its
+#     line; a mistyped job is refused;
 #  1. points: the cloth worth 20 points instead of 12, task 7 counted as regular points (its
 #     items renamed), then `scripts/instructor.sh rubric`;
 #  2. a new hidden check of task 2 with a rubric item of its own, then
@@ -11,14 +14,18 @@
 #
 # Each job must succeed and update the docs it affects; re-rendering must change cloth_shear's
 # files only. Then the tests an adaptation touches (the rubric, the grading of the solution, the
-# golden images and replays, the docs) must pass in the copy, unchanged.
+# golden images and replays) must pass in the copy, unchanged; re-rendering into a folder of its
+# own (`rerender --into`) must change nothing; and, the adaptations committed, the README's main
+# job (scripts/main.sh, as the jobs advise) must exit 0 with every point of the new rubric for
+# the solution and none for the starter, blaming nothing on the folder's mode.
 #
 #   adapt_test.sh ROOT WORK
 set -uo pipefail
 root="$1" work="$2"
 rm -rf "$work"
-mkdir -p "$work"
-copy="$work/a6"
+mkdir -p "$work/home"
+chmod 0700 "$work/home"
+copy="$work/home/a6"
 mkdir "$copy"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
@@ -41,7 +48,7 @@ if ! cmake --preset default >"$work/configure.log" 2>&1; then
   fail "the copy cannot be configured"
   exit 1
 fi
-pass "the copy is configured"
+pass "the copy is configured, under a folder of mode $(stat -c %a "$work/home")"
 
 # job NAME ARGS...: runs scripts/instructor.sh ARGS into $work/NAME.log; its exit status.
 job() {
@@ -73,6 +80,20 @@ rename_item() {
   OLD="$1" NEW="$2" perl -pi -e 's/^name = "\Q$ENV{OLD}\E"/name = "$ENV{NEW}"/' grader/rubric.toml
   OLD="$1" NEW="$2" perl -pi -e 's/^\| \Q$ENV{OLD}\E \|/| $ENV{NEW} |/' docs/instructor.md
 }
+
+# 0. Refusals ------------------------------------------------------------------------------------
+printf 'total = 100\n[[item]]\nname = "all"\ntests = "*"\npoints = 90\n' >"$work/short.toml"
+before=$failures
+A6_INSTRUCTOR_OUT="$work/short" job short rubric "$work/short.toml"
+status=$?
+[ "$status" -eq 2 ] || fail "a rubric that does not add up: exit status $status, not 2"
+says short "short.toml:1: total = 100 but the items' points add up to 90"
+[ ! -e "$work/short" ] || fail "the rubric that does not add up graded something"
+job mistyped rerendr
+status=$?
+[ "$status" -eq 2 ] || fail "a mistyped job: exit status $status, not 2"
+says mistyped "scripts/instructor.sh rerender"
+step_passed "$before" "refusals: a rubric that does not add up stops at once, with its line; a mistyped job"
 
 # 1. Points and extra credit ---------------------------------------------------------------------
 total=$(total)
@@ -160,18 +181,58 @@ else
 fi
 
 # The tests an adaptation touches, unchanged, in the copy: the golden tests (re-rendering built
-# them), the rubric's and the grading's tests on the new rubric, the docs. (The scores tests'
-# program links every wrong version's grader, the slowest build of all: the rubric job above
-# graded the solution and the starter with the new rubric already; the docs' example of a wrong
-# spring is the grading its update_docs made, not that test's.)
+# them), the rubric's and the grading's tests on the new rubric. (The scores tests' program links
+# every wrong version's grader, the slowest build of all: the rubric job above graded the
+# solution and the starter with the new rubric already; the docs' example of a wrong spring is
+# the grading its update_docs made, not that test's. The docs' test, docs_examples, is the check
+# each job ended with, and the last job's ran on these same files.)
 if ctest --preset default --no-tests=error -L golden >"$work/golden.log" 2>&1 &&
   cmake --build --preset default --target a6_grade_test a6_rubric_test >"$work/tests_build.log" 2>&1 &&
-  ctest --preset default --no-tests=error -R '^(grader_rubric|grader_grade_.*|docs_examples)$' \
+  ctest --preset default --no-tests=error -R '^(grader_rubric|grader_grade_.*)$' \
     -FS graded_t1_wrong_sign >"$work/tests.log" 2>&1; then
   pass "the affected tests pass: $(grep -h 'tests passed' "$work/golden.log" "$work/tests.log" | tr '\n' ' ')"
 else
   fail "tests failed after the adaptations:"$'\n'"$(grep -h -E 'tests passed|\(Failed\)|Timeout' "$work/golden.log" "$work/tests.log")"
 fi
 
+# 4. Re-rendering into a folder of its own: every image and replay as the copy holds them now.
+before=$failures
+golden_state=$(git status --porcelain -- tests/golden)
+if job into rerender --into "$work/goldens"; then
+  says into "images rendered into $work/goldens, 0 changed"
+  says into "images rendered into $work/goldens/hidden, 0 changed"
+  [ "$(git status --porcelain -- tests/golden)" = "$golden_state" ] || fail "rerender --into changed tests/golden"
+  step_passed "$before" "re-rendering into a folder of its own: every image as the copy holds it"
+else
+  fail "rerender --into failed:"$'\n'"$(tail -30 "$work/into.log")"
+fi
+
+# 5. The README's main job on the adapted checkout, its changes committed.
+before=$failures
+git add -A && git -c user.name=a6-test -c user.email=a6-test@localhost commit -qm "the adaptations"
+bash scripts/main.sh >"$work/main.log" 2>&1
+status=$?
+[ "$status" -eq 0 ] || { grep -E '^main:|error' "$work/main.log" | head -20; fail "scripts/main.sh exited $status"; }
+score_of() { grep -m1 '"score"' "$1" 2>/dev/null | tr -dc '0-9.'; }
+solution=$(score_of out/solution/results.json) starter=$(score_of out/starter/results.json)
+# The rubric's points and extra credit as the grader reads them.
+IFS=$'\t' read -r _ points _ extra < <(build/grader/a6_grade --list-items 2>/dev/null | tail -1)
+awk -v s="$solution" -v p="${points:-0}" -v e="${extra:-0}" 'BEGIN { exit !(s != "" && s == p + e) }' ||
+  fail "main.sh: the solution scored '$solution', not ${points:-?} + ${extra:-0} (the rubric's points and its extra credit)"
+points=$(printf '%.2f' "${points:-0}") extra=$(printf '%.2f' "${extra:-0}")
+[ "$starter" = "0.0" ] || fail "main.sh: the starter scored '$starter', not 0.0"
+grep -q "total *$points / $points *+$extra extra credit" "$work/main.log" ||
+  fail "the main job's summary does not give the solution $points / $points + $extra"
+for blame in "did not compile" "the grader kit is broken" "Permission denied"; do
+  if grep -q "$blame" out/solution/results.json "$work/main.log"; then
+    fail "the main job's grading of the solution says '$blame'"
+  fi
+done
+released=$(find out/student-release -type f 2>/dev/null | wc -l)
+[ "$released" -gt 100 ] || fail "the student release holds $released files"
+entries=$(unzip -Z1 out/gradescope/a6_autograder.zip 2>/dev/null)
+grep -qx setup.sh <<<"$entries" || fail "the Gradescope zip has no setup.sh"
+step_passed "$before" "the main job on the adapted checkout: solution $solution, starter $starter; release: $released files"
+
 [ "$failures" -eq 0 ] || { echo "$failures adaptation checks failed"; exit 1; }
-echo "the three adaptations and the suite after them: all true"
+echo "the adaptations, the suite after them and the main job: all true"
