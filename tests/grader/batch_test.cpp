@@ -594,10 +594,12 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
     add("wrong_" + name);
   }
   // (Not the fork bomb, nor the endless loop in the tasks' code: with this test's 2 s limit they
-  // cost their whole time budget, 2 minutes, and grader_hostile_* grade them on their own.)
-  const std::set<std::string> hostile = {
-      "compile_error", "missing_file", "static_exit", "static_abort", "static_infinite_loop",
-      "segfault",      "huge_output",  "write_files", "nan",          "symlink_folder"};
+  // cost their whole time budget, 2 minutes, and grader_hostile_* grade them on their own. Of the
+  // code that ends or hangs before main, only the hang: an exit or an abort there is the same
+  // "build failed" row, each graded on its own by grader_hostile_*.)
+  const std::set<std::string> hostile = {"compile_error", "missing_file",  "static_infinite_loop",
+                                         "segfault",      "huge_output",   "write_files",
+                                         "nan",           "symlink_folder"};
   for (const std::string& fixture : staging::fixtures()) {
     if (hostile.count(fixture) == 0) continue;
     staging::stage(in / ("hostile_" + fixture), fixture, {}, staging::omittedBy(fixture));
@@ -620,7 +622,7 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
   fs::create_directories(in / "empty");
   add("empty");
   writeAll(in / "README.txt", "submissions downloaded on Monday");
-  ASSERT_GE(students.size(), 18u);
+  ASSERT_GE(students.size(), 16u);
 
   // Short time limits for the cases that never return (the correct checks take hundredths of
   // a second): the endless loop costs task 1's checks 2 s each.
@@ -723,7 +725,6 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
   // Every hostile or broken one has a grade, never more than the solution's; those with a
   // task file missing or broken say "build failed"; those with no task file, "not graded".
   const std::set<std::string> buildFails = {"hostile_compile_error", "hostile_missing_file",
-                                            "hostile_static_exit", "hostile_static_abort",
                                             "hostile_static_infinite_loop"};
   const std::set<std::string> notGraded = {"empty"};
   // A damaged archive: libarchive 3.6 (Debian 12) reads the entries before the damage (build
