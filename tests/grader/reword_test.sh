@@ -21,11 +21,11 @@ sed -E 's/^time_limit = [0-9.]+/time_limit = 2/' "$root/grader/rubric.toml" >"$o
 # something). Each case runs the checks where its file fails: every case but one breaks
 # spring.cpp, whose failures show in task 1's checks (both probes: task 3's first checks start
 # the probe with the reference forces, which a static initializer's exit or abort breaks too);
-# the same decisions decide every other check. Three cases run only two checks each, of task 1
-# (computeForce loops; computeForce answers 4 MiB of garbage, which costs the grader a second to
-# parse in each check) and of task 3 (the stepper asks for forces without end): each looping
+# the same decisions decide every other check. The two loops run only two checks each, of task 1
+# (computeForce loops) and of task 3 (the stepper asks for forces without end): each looping
 # check costs its time limit twice (a time-out is run again), so their whole tasks would take
-# minutes for the same decisions.
+# minutes for the same decisions. wide_answer runs two of task 1 too: its computeForce answers
+# 4 MiB of garbage, a second of parsing in each check, and task 3's checks never call it.
 spring="Task1*:Task3TimeStepping.OneStep*"
 two_of_task1="Task1Spring.AtRest*:Task1Spring.Stretched*"
 cases=("exit_in_code:$spring" "segfault:$spring" "garbage_on_answer_pipe:$spring"

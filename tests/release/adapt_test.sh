@@ -1,23 +1,25 @@
 #!/usr/bin/env bash
-# An instructor adapts the assignment, and the suite follows (ctest adapt_assignment, label
-# "instructor"). In a copy of the checkout under a folder of mode 0700 (where a newcomer clones:
-# /root or a home folder, which the sandbox's user cannot pass), by the steps of
-# docs/instructor.md's "Adapting the assignment" and nothing else:
+# A newcomer's clone, then an instructor's adaptations, and the suite follows (ctest
+# adapt_assignment, label "instructor"). In a copy of the checkout under a folder of mode 0700
+# (where a newcomer clones: /root or a home folder, which the sandbox's user cannot pass):
 #
-#  0. the jobs' refusals: a rubric that does not add up stops before anything is graded, with its
+#  0. the README's main job, scripts/main.sh, from nothing (it configures and builds): it exits
+#     0, the solution gets every point and the extra credit, the starter none, and no message
+#     blames the submission or "the kit" for what is a folder's mode; then, by the steps of
+#     docs/instructor.md's "Adapting the assignment" and nothing else, on the build it made:
+#  1. the jobs' refusals: a rubric that does not add up stops before anything is graded, with its
 #     line; a mistyped job is refused;
-#  1. points: the cloth worth 20 points instead of 12, task 7 counted as regular points (its
+#  2. points: the cloth worth 20 points instead of 12, task 7 counted as regular points (its
 #     items renamed), then `scripts/instructor.sh rubric`;
-#  2. a new hidden check of task 2 with a rubric item of its own, then
+#  3. a new hidden check of task 2 with a rubric item of its own, then
 #     `scripts/instructor.sh hidden-check`;
-#  3. the cloth_shear scene's springs twice as stiff, then `scripts/instructor.sh rerender`.
+#  4. the cloth_shear scene's springs twice as stiff, then `scripts/instructor.sh rerender`.
 #
-# Each job must succeed and update the docs it affects; re-rendering must change cloth_shear's
-# files only. Then the tests an adaptation touches (the rubric, the grading of the solution, the
-# golden images and replays) must pass in the copy, unchanged; re-rendering into a folder of its
-# own (`rerender --into`) must change nothing; and, the adaptations committed, the README's main
-# job (scripts/main.sh, as the jobs advise) must exit 0 with every point of the new rubric for
-# the solution and none for the starter, blaming nothing on the folder's mode.
+# Each job must succeed and update the docs it affects (the last one finding every example and
+# count already true: the docs' test would pass); re-rendering must change cloth_shear's files
+# only. Then the tests an adaptation touches (the rubric, the grading of the solution, the
+# golden images and replays) must pass in the copy, unchanged; and re-rendering into a folder of
+# its own (`rerender --into`) must change no image.
 #
 #   adapt_test.sh ROOT WORK
 set -uo pipefail
@@ -41,14 +43,41 @@ pass() { echo "ok:   $*"; }
 cd "$copy" || exit 1
 export A6_INSTRUCTOR_OUT="$work/out"
 unset A6_BUILD_DIR
-# Configured only: each job builds what it needs, as it would in a fresh checkout (the last one,
-# re-rendering, builds everything).
-if ! cmake --preset default >"$work/configure.log" 2>&1; then
-  tail -20 "$work/configure.log"
-  fail "the copy cannot be configured"
-  exit 1
+if [ "$(id -u)" -eq 0 ]; then
+  pass "copied $(git ls-files | wc -l) files into $copy (under a folder of mode $(stat -c %a "$work/home"))"
+else
+  # (Not root: the sandbox runs as this user, whom the folder's mode stops nowhere.)
+  echo "note: not root, so the folder's mode 0700 tests nothing here; the rest holds as ever"
 fi
-pass "the copy is configured, under a folder of mode $(stat -c %a "$work/home")"
+
+# 0. The README's main job, from nothing.
+before=$failures
+bash scripts/main.sh >"$work/main.log" 2>&1
+status=$?
+[ "$status" -eq 0 ] || { grep -E '^main:|error' "$work/main.log" | head -20; fail "scripts/main.sh exited $status"; }
+score_of() { grep -m1 '"score"' "$1" 2>/dev/null | tr -dc '0-9.'; }
+solution=$(score_of out/solution/results.json) starter=$(score_of out/starter/results.json)
+# The rubric's points and extra credit as the grader reads them (not pinned: an instructor's
+# rubric has its own).
+IFS=$'\t' read -r _ points _ extra < <(build/grader/a6_grade --list-items 2>/dev/null | tail -1)
+awk -v s="$solution" -v p="${points:-0}" -v e="${extra:-0}" 'BEGIN { exit !(s != "" && s == p + e) }' ||
+  fail "main.sh: the solution scored '$solution', not ${points:-?} + ${extra:-0} (the rubric's points and its extra credit)"
+points=$(printf '%.2f' "${points:-0}") extra=$(printf '%.2f' "${extra:-0}")
+[ "$starter" = "0.0" ] || fail "main.sh: the starter scored '$starter', not 0.0"
+grep -q "total *$points / $points *+$extra extra credit" "$work/main.log" ||
+  fail "the main job's summary does not give the solution $points / $points + $extra"
+for blame in "did not compile" "the grader kit is broken" "Permission denied"; do
+  if grep -q "$blame" out/solution/results.json "$work/main.log"; then
+    fail "the main job's grading of the solution says '$blame'"
+  fi
+done
+released=$(find out/student-release -type f 2>/dev/null | wc -l)
+[ "$released" -gt 100 ] || fail "the student release holds $released files"
+entries=$(unzip -Z1 out/gradescope/a6_autograder.zip 2>/dev/null)
+grep -qx setup.sh <<<"$entries" || fail "the Gradescope zip has no setup.sh"
+[ "$failures" -eq "$before" ] ||
+  { echo "$((failures - before)) checks of the main job failed: the adaptations need its build"; exit 1; }
+pass "the main job from nothing: solution $solution, starter $starter; release: $released files"
 
 # job NAME ARGS...: runs scripts/instructor.sh ARGS into $work/NAME.log; its exit status.
 job() {
@@ -81,7 +110,7 @@ rename_item() {
   OLD="$1" NEW="$2" perl -pi -e 's/^\| \Q$ENV{OLD}\E \|/| $ENV{NEW} |/' docs/instructor.md
 }
 
-# 0. Refusals ------------------------------------------------------------------------------------
+# 1. Refusals ------------------------------------------------------------------------------------
 printf 'total = 100\n[[item]]\nname = "all"\ntests = "*"\npoints = 90\n' >"$work/short.toml"
 before=$failures
 A6_INSTRUCTOR_OUT="$work/short" job short rubric "$work/short.toml"
@@ -95,7 +124,7 @@ status=$?
 says mistyped "scripts/instructor.sh rerender"
 step_passed "$before" "refusals: a rubric that does not add up stops at once, with its line; a mistyped job"
 
-# 1. Points and extra credit ---------------------------------------------------------------------
+# 2. Points and extra credit ---------------------------------------------------------------------
 total=$(total)
 set_in_item "Task 4: cloth" points 20
 for item in "spring Jacobians" "the implicit step"; do
@@ -114,7 +143,7 @@ else
   fail "the rubric job failed:"$'\n'"$(tail -30 "$work/rubric.log")"
 fi
 
-# 2. A new hidden check with its own item -------------------------------------------------------
+# 3. A new hidden check with its own item -------------------------------------------------------
 cat >>tests/hidden/hidden_test.cpp <<'CPP'
 
 namespace a6::test {
@@ -159,7 +188,7 @@ else
   fail "the hidden-check job failed:"$'\n'"$(tail -30 "$work/hidden.log")"
 fi
 
-# 3. A scene's constant --------------------------------------------------------------------------
+# 4. A scene's constant --------------------------------------------------------------------------
 perl -0pi -e 's{("cloth_shear".*?)clothParams\(true, false\)}
   {$1\[\] { SceneParams p = clothParams(true, false); p.ks *= 2; return p; }()}s or die' \
   framework/scenes/mass_spring_scenes.cpp
@@ -169,6 +198,9 @@ scenes=$(find tests/golden/replays -name '*.json' | wc -l)
 if job rerender rerender; then
   says rerender "changed: cloth_shear"
   says rerender "1 written to tests/golden/replays, $((scenes - 1)) the same run as committed"
+  # The docs the first two jobs rewrote, compared afresh: what the docs' test, docs_examples,
+  # compares.
+  says rerender "every example and count was already true"
   changed=$(git status --porcelain -- tests/golden | awk '{ print $2 }')
   others=$(grep -v 'cloth_shear' <<<"$changed")
   [ -n "$changed" ] || fail "re-rendering changed no file of tests/golden"
@@ -183,19 +215,17 @@ fi
 # The tests an adaptation touches, unchanged, in the copy: the golden tests (re-rendering built
 # them), the rubric's and the grading's tests on the new rubric. (The scores tests' program links
 # every wrong version's grader, the slowest build of all: the rubric job above graded the
-# solution and the starter with the new rubric already; the docs' example of a wrong spring is
-# the grading its update_docs made, not that test's. The docs' test, docs_examples, is the check
-# each job ended with, and the last job's ran on these same files.)
+# solution and the starter with the new rubric already. The docs' test, docs_examples, would
+# compare what the last job's docs step compared on these same files, above.)
 if ctest --preset default --no-tests=error -L golden >"$work/golden.log" 2>&1 &&
   cmake --build --preset default --target a6_grade_test a6_rubric_test >"$work/tests_build.log" 2>&1 &&
-  ctest --preset default --no-tests=error -R '^(grader_rubric|grader_grade_.*)$' \
-    -FS graded_t1_wrong_sign >"$work/tests.log" 2>&1; then
+  ctest --preset default --no-tests=error -R '^(grader_rubric|grader_grade_.*)$' >"$work/tests.log" 2>&1; then
   pass "the affected tests pass: $(grep -h 'tests passed' "$work/golden.log" "$work/tests.log" | tr '\n' ' ')"
 else
   fail "tests failed after the adaptations:"$'\n'"$(grep -h -E 'tests passed|\(Failed\)|Timeout' "$work/golden.log" "$work/tests.log")"
 fi
 
-# 4. Re-rendering into a folder of its own: every image and replay as the copy holds them now.
+# 5. Re-rendering into a folder of its own: every image as the copy holds it now.
 before=$failures
 golden_state=$(git status --porcelain -- tests/golden)
 if job into rerender --into "$work/goldens"; then
@@ -207,32 +237,5 @@ else
   fail "rerender --into failed:"$'\n'"$(tail -30 "$work/into.log")"
 fi
 
-# 5. The README's main job on the adapted checkout, its changes committed.
-before=$failures
-git add -A && git -c user.name=a6-test -c user.email=a6-test@localhost commit -qm "the adaptations"
-bash scripts/main.sh >"$work/main.log" 2>&1
-status=$?
-[ "$status" -eq 0 ] || { grep -E '^main:|error' "$work/main.log" | head -20; fail "scripts/main.sh exited $status"; }
-score_of() { grep -m1 '"score"' "$1" 2>/dev/null | tr -dc '0-9.'; }
-solution=$(score_of out/solution/results.json) starter=$(score_of out/starter/results.json)
-# The rubric's points and extra credit as the grader reads them.
-IFS=$'\t' read -r _ points _ extra < <(build/grader/a6_grade --list-items 2>/dev/null | tail -1)
-awk -v s="$solution" -v p="${points:-0}" -v e="${extra:-0}" 'BEGIN { exit !(s != "" && s == p + e) }' ||
-  fail "main.sh: the solution scored '$solution', not ${points:-?} + ${extra:-0} (the rubric's points and its extra credit)"
-points=$(printf '%.2f' "${points:-0}") extra=$(printf '%.2f' "${extra:-0}")
-[ "$starter" = "0.0" ] || fail "main.sh: the starter scored '$starter', not 0.0"
-grep -q "total *$points / $points *+$extra extra credit" "$work/main.log" ||
-  fail "the main job's summary does not give the solution $points / $points + $extra"
-for blame in "did not compile" "the grader kit is broken" "Permission denied"; do
-  if grep -q "$blame" out/solution/results.json "$work/main.log"; then
-    fail "the main job's grading of the solution says '$blame'"
-  fi
-done
-released=$(find out/student-release -type f 2>/dev/null | wc -l)
-[ "$released" -gt 100 ] || fail "the student release holds $released files"
-entries=$(unzip -Z1 out/gradescope/a6_autograder.zip 2>/dev/null)
-grep -qx setup.sh <<<"$entries" || fail "the Gradescope zip has no setup.sh"
-step_passed "$before" "the main job on the adapted checkout: solution $solution, starter $starter; release: $released files"
-
-[ "$failures" -eq 0 ] || { echo "$failures adaptation checks failed"; exit 1; }
-echo "the adaptations, the suite after them and the main job: all true"
+[ "$failures" -eq 0 ] || { echo "$failures checks failed"; exit 1; }
+echo "the main job, the adaptations and the suite after them: all true"
