@@ -566,8 +566,8 @@ TEST(Batch, ABadCommandLineOrInputExitsWith2) {
 
 // A class of every kind in one batch with -j 2, checked row by row: the solution, the starter,
 // one wrong version of each task, hostile submissions that break the build or hang the probe
-// before main (and those a batch must keep apart: one that writes files, one that floods
-// its output), the archive cases, a damaged archive, an empty folder, a stray file. Every wrong
+// before main (and those a batch must keep apart: one that writes files, one that floods its
+// output), the archive cases, a damaged archive, an empty folder, a stray file. Every wrong
 // version and every hostile submission is graded on its own by the grader_scores_* and
 // grader_hostile_* tests; here the batch must keep each one's row right beside the others.
 TEST(Batch, GradesOneOfEveryKindOfSubmission) {
