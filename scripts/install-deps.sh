@@ -49,17 +49,17 @@ packages=(
   zip unzip          # the Gradescope autograder zip (scripts/gradescope-package.sh) and its test
   jq                 # JSON on the command line (scripts/instructor.sh reads results.json)
   similarity-tester  # sim_c++: code similarity between submissions (a6_batch --similarity)
+  universal-ctags    # each function's first and last line (tests/format/function_size_test.sh)
 )
 
 # Per platform: Debian gets Chromium, the headless browser that checks the desktop in the
 # browser (ctest viewer_desktop_in_browser; Ubuntu's chromium is a snap, which chroots and
 # containers cannot run, so the test skips there); Debian 12 also gets g++-11, Ubuntu 22.04's
-# compiler, for the Gradescope image's check (scripts/compat-ubuntu2204.sh), and clang-format and
-# clang-tidy 14, for the layout and function-size tests (tests/format/); Ubuntu 22.04 has no
-# toml++ package (the Gradescope zip carries a copy of it; a checkout there builds everything
-# but the grader, cmake/A6Toml.cmake).
+# compiler, for the Gradescope image's check (scripts/compat-ubuntu2204.sh), and clang-format 14,
+# for the layout test (tests/format/); Ubuntu 22.04 has no toml++ package (the Gradescope zip
+# carries a copy of it; a checkout there builds everything but the grader, cmake/A6Toml.cmake).
 case "$os_id:$os_version" in
-  debian:12) packages+=(chromium g++-11 clang-format clang-tidy) ;;
+  debian:12) packages+=(chromium g++-11 clang-format) ;;
   debian:13) packages+=(chromium) ;;
   ubuntu:22.04)
     echo "install-deps: Ubuntu 22.04 has no libtomlplusplus-dev: skipped" >&2
