@@ -97,9 +97,11 @@ file(GENERATE OUTPUT ${A6_KIT_PCH} CONTENT
 #include <limits>
 #include <vector>
 ")
+# Both compiled through the build's compiler cache when it has one (cmake/A6FastBuild.cmake):
+# the same bytes as the compiler's, which a second build or a copy of the checkout reuses.
 add_custom_command(
   OUTPUT ${A6_KIT_PCH}.gch
-  COMMAND ${CMAKE_CXX_COMPILER} ${A6_KIT_COMPILE_FLAGS} -x c++-header ${A6_KIT_PCH}
+  COMMAND ${CMAKE_CXX_COMPILER_LAUNCHER} ${CMAKE_CXX_COMPILER} ${A6_KIT_COMPILE_FLAGS} -x c++-header ${A6_KIT_PCH}
           -o ${A6_KIT_PCH}.gch
   DEPENDS ${A6_KIT_PCH} ${staged_headers}
   COMMENT "Precompiling the grader kit's header"
@@ -120,7 +122,7 @@ if(A6_HAVE_SOLUTION)
     add_custom_command(
       OUTPUT ${A6_KNOWN_DIR}/${file}.o ${A6_KNOWN_DIR}/${file}.cpp
       COMMAND ${CMAKE_COMMAND} -E make_directory ${A6_KNOWN_DIR}
-      COMMAND ${CMAKE_CXX_COMPILER} ${A6_KIT_COMPILE_FLAGS}
+      COMMAND ${CMAKE_CXX_COMPILER_LAUNCHER} ${CMAKE_CXX_COMPILER} ${A6_KIT_COMPILE_FLAGS}
               -ffile-prefix-map=${PROJECT_SOURCE_DIR}/solution/= -c ${source}
               -o ${A6_KNOWN_DIR}/${file}.o
       COMMAND ${CMAKE_COMMAND} -E copy ${source} ${A6_KNOWN_DIR}/${file}.cpp
