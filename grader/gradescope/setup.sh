@@ -75,7 +75,7 @@ else
   packages=()
   eval "$(sed -n '/^packages=(/,/^)/p' "$src/scripts/install-deps.sh")"
   [ "${#packages[@]}" -gt 0 ] || die "no package list found in scripts/install-deps.sh"
-  not_for_grading=" git ccache mold libbenchmark-dev libglfw3-dev libimgui-dev xvfb xauth x11vnc novnc websockify fonts-dejavu-core zip unzip jq "
+  not_for_grading=" git ccache mold libbenchmark-dev libglfw3-dev libimgui-dev xvfb xauth x11vnc novnc websockify fonts-dejavu-core zip unzip jq universal-ctags "
   wanted=()
   for p in "${packages[@]}"; do
     [[ $not_for_grading == *" $p "* ]] || wanted+=("$p")

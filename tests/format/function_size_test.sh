@@ -13,11 +13,23 @@ set -uo pipefail
 root="$(cd "$1" && pwd)"
 work="$2"
 max="${3:-60}"
-command -v ctags >/dev/null && ctags --version 2>/dev/null | grep -q '^Universal Ctags' ||
-  { echo "SKIP: no Universal Ctags (Debian's universal-ctags package)"; exit 77; }
+# Debian's package names it ctags-universal, and ctags unless another ctags holds that name.
+ctags=""
+for c in ctags-universal ctags; do
+  if command -v "$c" >/dev/null && "$c" --version 2>/dev/null | grep -q '^Universal Ctags'; then
+    ctags="$c"; break
+  fi
+done
+[ -n "$ctags" ] || { echo "SKIP: no Universal Ctags (Debian's universal-ctags package)"; exit 77; }
+ctags() { command "$ctags" "$@"; }
 
 # FILE... -> "FILE:LINE: NAME is N lines" for each definition longer than $max lines.
 too_long() {
+  { tagged_too_long "$@"; untagged_too_long "$@"; } | sort -u -t: -k1,1 -k2,2n
+}
+
+# What ctags measures: each function definition's first and last line.
+tagged_too_long() {
   ctags --languages=C++ --language-force=C++ --kinds-C++=f --fields=+ne -o - "$@" 2>/dev/null |
     awk -F'\t' -v max="$max" '{
       line = ""; end = ""; scope = ""
@@ -29,26 +41,54 @@ too_long() {
       name = $1
       if (name ~ /^__anon/) { sub(/.*::/, "", scope); name = "a lambda in " scope }
       if (end != "" && end - line + 1 > max) print $2 ":" line ": " name " is " end - line + 1 " lines"
-    }' | sort -u
+    }'
 }
 
-# The canary: a function one line too long, and one as long as allowed, must give exactly one
-# finding; a ctags that measured nothing would otherwise pass everything.
+# What ctags 5.9 leaves out: a template whose return type is one of its parameters
+# (`template <typename R, typename B>` then `R f(B b) {`) gets no tag at all. Each definition
+# after a template line that starts no tag is measured here, from its first line to the brace
+# that closes its first one (braces in comments, characters and strings aside).
+untagged_too_long() {
+  ctags --languages=C++ --language-force=C++ --kinds-C++='*' --fields=+n -o - "$@" 2>/dev/null |
+    awk -F'\t' '{ for (i = 4; i <= NF; i++) if ($i ~ /^line:/) print $2 ":" substr($i, 6) }' \
+    >"$work/tag_starts"
+  awk -v max="$max" '
+    FILENAME == ARGV[1] { tagged[$0] = 1; next }
+    FNR == 1 { pending = 0; depth = -1 }
+    pending && depth < 0 && !tagged[FILENAME ":" FNR] && !tagged[FILENAME ":" (FNR - 1)] &&
+      $0 !~ /;[ \t]*$/ { first = FNR; head = $0; depth = 0 }
+    { pending = 0 }
+    /^[ \t]*template[ \t]*</ && depth < 0 { pending = 1 }
+    depth >= 0 {
+      line = $0
+      gsub(/\/\/.*/, "", line); gsub(/"([^"\\]|\\.)*"/, "", line); gsub(/'\''([^'\''\\]|\\.)*'\''/, "", line)
+      opened = gsub(/\{/, "{", line); closed = gsub(/\}/, "}", line)
+      depth += opened - closed; if (opened > 0) seen = 1
+      if (seen && depth <= 0) {
+        name = head; sub(/\(.*/, "", name); sub(/.*[ \t*&]/, "", name)
+        if (FNR - first + 1 > max) print FILENAME ":" first ": " name " is " FNR - first + 1 " lines"
+        depth = -1; seen = 0
+      }
+    }' "$work/tag_starts" "$@"
+}
+
+# The canary: a function one line too long, a template of the shape ctags leaves out one line
+# too long, and a function as long as allowed must give exactly the first two.
 mkdir -p "$work" || exit 1
 canary="$work/function_size_canary.cpp"
+body() { for ((i = 0; i < $1; i++)); do echo "  x += $i;  // {"; done; }
 {
   echo "namespace a {"
-  for name in tooLong justRight; do
-    echo "int $name(int x) {"
-    lines=$((max - 2)); [ "$name" = tooLong ] && lines=$((max - 1))
-    for ((i = 0; i < lines; i++)); do echo "  x += $i;"; done
-    echo "}"
-  done
+  echo "int tooLong(int x) {"; body $((max - 1)); echo "}"
+  echo "template <typename R, typename B>"; echo "R tooLongTemplate(B x) {"; body $((max - 1)); echo "}"
+  echo "int justRight(int x) {"; body $((max - 2)); echo "}"
   echo "}"
 } >"$canary"
 found=$(too_long "$canary")
-if [ "$found" != "$canary:2: tooLong is $((max + 1)) lines" ]; then
-  echo "FAIL: the measure is broken: a function of $((max + 1)) lines and one of $max gave:"
+expected="$canary:2: tooLong is $((max + 1)) lines
+$canary:$((max + 4)): tooLongTemplate is $((max + 1)) lines"
+if [ "$found" != "$expected" ]; then
+  echo "FAIL: the measure is broken: two functions of $((max + 1)) lines and one of $max gave:"
   echo "${found:-(nothing)}"
   exit 1
 fi

@@ -594,9 +594,10 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
     add("wrong_" + name);
   }
   // (Not the fork bomb, nor the endless loop in the tasks' code: with this test's 2 s limit they
-  // cost their whole time budget, 2 minutes, and grader_hostile_* grade them on their own. Of the
-  // code that ends or hangs before main, only the hang: an exit or an abort there is the same
-  // "build failed" row, each graded on its own by grader_hostile_*.)
+  // cost their whole time budget, 2 minutes, and grader_hostile_* grade them on their own, the
+  // loop with fewer checks of task 1. Of the code that ends or hangs before main, only the hang:
+  // an exit or an abort there is the same "build failed" row, each graded on its own by
+  // grader_hostile_*.)
   const std::set<std::string> hostile = {"compile_error", "missing_file",  "static_infinite_loop",
                                          "segfault",      "huge_output",   "write_files",
                                          "nan",           "symlink_folder"};
