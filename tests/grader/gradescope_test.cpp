@@ -251,6 +251,39 @@ std::string whoAmISpring(const fs::path& source) {
   return text + readAll(fs::path(A6_SOURCE_DIR) / "solution" / "spring.cpp");
 }
 
+// Every point and the extra credit, every check passed, the report written, no scratch files
+// left, and the summary on Gradescope's stdout.
+void expectEveryPoint(const json& j, const Outcome& r) {
+  const a6::grader::Rubric rubric = a6::grader::loadRubric(A6_DEFAULT_RUBRIC);
+  ASSERT_TRUE(rubric.ok()) << rubric.error;
+  double extra = 0;
+  for (const auto& item : rubric.items) extra += item.extraCredit ? item.points : 0;
+  EXPECT_DOUBLE_EQ(j["score"].get<double>(), rubric.totalPoints + extra) << tail(r.output);
+  for (const json& t : j["tests"]) EXPECT_EQ(t["status"], "passed") << t;
+  EXPECT_TRUE(fs::exists(package().root / "results" / "report.html"));
+  EXPECT_FALSE(fs::exists(package().root / "results" / "work")) << "scratch files left";
+  EXPECT_TRUE(contains(r.output, "total")) << "the summary goes to Gradescope's stdout";
+  EXPECT_TRUE(contains(r.output, "report.html")) << "where instructors find the report";
+}
+
+// What whoAmISpring printed: a user of its own, every graders' file denied; `docker`: the
+// namespace was refused (so the run proved the file permissions).
+void expectNoSecretRead(const json& j, const fs::path& source, bool docker) {
+  const std::string html = readAll(package().root / "results" / "report.html");
+  std::smatch who;
+  ASSERT_TRUE(std::regex_search(html, who, std::regex("A6-WHO euid=([0-9]+)"))) << tail(html);
+  EXPECT_GE(std::stol(who[1].str()), 60001) << "the probe must run as a sandbox user of its own";
+  EXPECT_FALSE(contains(html, "A6-WHO READ")) << "student code read a grader's file";
+  EXPECT_TRUE(contains(html, "A6-WHO denied " + (source / "tests/golden/manifest.json").string()))
+      << "the probe's attempt was not seen";
+  if (!docker) return;
+  std::string notes;
+  for (const json& n : j["extra_data"]["notes"]) notes += n.get<std::string>() + "\n";
+  EXPECT_TRUE(contains(notes, "could not hide the grader's files"))
+      << "the namespace was not refused, so this case tested nothing new:\n"
+      << notes;
+}
+
 class Environment final : public ::testing::Environment {
  public:
   void TearDown() override {
@@ -403,27 +436,6 @@ TEST(Gradescope, SetupBuildsTheGraderFromScratchInUnderFiveMinutes) {
   p.built = true;
 }
 
-TEST(Gradescope, TheSolutionGetsEveryPointAndTheExtraCredit) {
-  REQUIRE_BUILT();
-  const a6::grader::Rubric rubric = a6::grader::loadRubric(A6_DEFAULT_RUBRIC);
-  ASSERT_TRUE(rubric.ok()) << rubric.error;
-  double extra = 0;
-  for (const auto& item : rubric.items) extra += item.extraCredit ? item.points : 0;
-
-  makeSubmission(solutionFiles());
-  const Outcome r = runAutograder();
-  report("run_autograder on the solution", r.seconds);
-  EXPECT_EQ(r.status, 0) << tail(r.output);
-  const json j = results(r);
-  ASSERT_FALSE(j.is_discarded());
-  EXPECT_DOUBLE_EQ(j["score"].get<double>(), rubric.totalPoints + extra) << tail(r.output);
-  for (const json& t : j["tests"]) EXPECT_EQ(t["status"], "passed") << t;
-  EXPECT_TRUE(fs::exists(package().root / "results" / "report.html"));
-  EXPECT_FALSE(fs::exists(package().root / "results" / "work")) << "scratch files left";
-  EXPECT_TRUE(contains(r.output, "total")) << "the summary goes to Gradescope's stdout";
-  EXPECT_TRUE(contains(r.output, "report.html")) << "where instructors find the report";
-}
-
 TEST(Gradescope, AZipOfTheStarterGetsZero) {
   REQUIRE_BUILT();
   const fs::path submission = package().root / "submission";
@@ -458,49 +470,34 @@ TEST(Gradescope, AnEmptySubmissionGetsZeroAndIsToldWhichFilesWereMissing) {
   for (const std::string& f : kTaskFiles) EXPECT_TRUE(contains(output, f)) << f << "\n" << output;
 }
 
-TEST(Gradescope, StudentCodeRunsAsNobodyAndCannotReadTheGradersFiles) {
+// The solution gets every point and the extra credit, and its code runs as a sandbox user of its
+// own that cannot read the graders' files. As root, its spring also prints its user and tries to
+// open them before main; it is graded as run here (a private mount namespace hides the trees),
+// then as in an unprivileged Docker container, where the namespace is refused and only
+// setup.sh's file permissions protect them.
+TEST(Gradescope, TheSolutionGetsEveryPointAsAUserThatCannotReadTheGradersFiles) {
   REQUIRE_BUILT();
-  if (geteuid() != 0) GTEST_SKIP() << "not root: the sandbox changes user only as root";
+  const bool root = geteuid() == 0;
   const fs::path source = package().root / "source";
   std::map<std::string, std::string> files = solutionFiles();
-  files["spring.cpp"] = whoAmISpring(source);
-  // As run here (a private mount namespace hides the trees), then as in an unprivileged Docker
-  // container, where the namespace is refused and only setup.sh's file permissions protect them.
-  const bool canDrop = run("command -v setpriv").status == 0;
+  if (root) files["spring.cpp"] = whoAmISpring(source);
+  const bool canDrop = root && run("command -v setpriv").status == 0;
+  if (!root) std::printf("[gradescope] not root: the sandbox changes user only as root\n");
+  if (root && !canDrop) std::printf("[gradescope] setpriv missing: no run without namespaces\n");
   for (const bool docker : {false, true}) {
-    SCOPED_TRACE(docker ? "without CAP_SYS_ADMIN (no mount namespace)" : "as root");
-    if (docker && !canDrop) {
-      std::printf("[gradescope] setpriv missing: the case without namespaces is not run\n");
-      continue;
-    }
+    if (docker && !canDrop) continue;
+    SCOPED_TRACE(docker ? "without CAP_SYS_ADMIN (no mount namespace)" : "as run here");
     makeSubmission(files);
     const Outcome r =
         runAutograder(docker ? "setpriv --bounding-set -sys_admin --inh-caps -sys_admin --" : "");
-    report(
-        docker ? "run_autograder without mount namespaces" : "run_autograder, sandbox user check",
-        r.seconds);
+    report(docker ? "run_autograder on the solution without mount namespaces"
+                  : "run_autograder on the solution",
+           r.seconds);
     EXPECT_EQ(r.status, 0) << tail(r.output);
     const json j = results(r);
     ASSERT_FALSE(j.is_discarded());
-    const a6::grader::Rubric rubric = a6::grader::loadRubric(A6_DEFAULT_RUBRIC);
-    double extra = 0;
-    for (const auto& item : rubric.items) extra += item.extraCredit ? item.points : 0;
-    EXPECT_DOUBLE_EQ(j["score"].get<double>(), rubric.totalPoints + extra)
-        << "the solution's points: " << tail(r.output);
-    const std::string html = readAll(package().root / "results" / "report.html");
-    std::smatch who;
-    ASSERT_TRUE(std::regex_search(html, who, std::regex("A6-WHO euid=([0-9]+)"))) << tail(html);
-    EXPECT_GE(std::stol(who[1].str()), 60001) << "the probe must run as a sandbox user of its own";
-    EXPECT_FALSE(contains(html, "A6-WHO READ")) << "student code read a grader's file";
-    EXPECT_TRUE(contains(html, "A6-WHO denied " + (source / "tests/golden/manifest.json").string()))
-        << "the probe's attempt was not seen";
-    if (docker) {
-      std::string notes;
-      for (const json& n : j["extra_data"]["notes"]) notes += n.get<std::string>() + "\n";
-      EXPECT_TRUE(contains(notes, "could not hide the grader's files"))
-          << "the namespace was not refused, so this case tested nothing new:\n"
-          << notes;
-    }
+    expectEveryPoint(j, r);
+    if (root) expectNoSecretRead(j, source, docker);
   }
 }
 
