@@ -245,15 +245,30 @@ void expectHonestScore(const Graded& g, const Rubric& rubric, const std::set<int
 }
 
 // The score docs/instructor.md's table of hostile cases gives the case `name` (the leading number
-// of its row's score column) is the one it got: the table cannot drift from the grader.
-void expectDocumentedScore(const std::string& name, const Graded& g) {
+// of its row's score column) is the one it got: the table cannot drift from the grader. Its
+// header says the rubric its scores are for ("score (of 100 + 13 extra credit)"); graded with
+// another (an instructor's), the rows are not compared.
+void expectDocumentedScore(const std::string& name, const Graded& g, const Rubric& rubric) {
   std::istringstream guide(readAll(kSource / "docs" / "instructor.md"));
+  const std::string header = "| case | what the submission does | score (of ";
   const std::string key = "`" + name + "`";
+  double points = -1, extra = -1;
   for (std::string line; std::getline(guide, line);) {
+    if (line.rfind(header, 0) == 0) {
+      std::sscanf(line.c_str() + header.size(), "%lf + %lf", &points, &extra);
+      double ours = 0;
+      for (const RubricItem& item : rubric.items) ours += item.extraCredit ? item.points : 0;
+      if (points != rubric.totalPoints || extra != ours) {
+        std::printf("[ hostile  ] the guide's table is for a rubric of %g + %g: not compared\n",
+                    points, extra);
+        return;
+      }
+    }
     std::vector<std::string> cells;
     std::istringstream row(line);
     for (std::string cell; std::getline(row, cell, '|');) cells.push_back(cell);
-    if (line.rfind("| `", 0) != 0 || cells.size() < 4 || cells[1].find(key) == std::string::npos) {
+    if (points < 0 || line.rfind("| `", 0) != 0 || cells.size() < 4 ||
+        cells[1].find(key) == std::string::npos) {
       continue;
     }
     const double documented = std::strtod(cells[3].c_str(), nullptr);
@@ -261,7 +276,8 @@ void expectDocumentedScore(const std::string& name, const Graded& g) {
         << "docs/instructor.md's table of hostile cases gives " << name << " " << cells[3];
     return;
   }
-  ADD_FAILURE() << "docs/instructor.md's table of hostile cases has no row for " << key;
+  ADD_FAILURE() << "docs/instructor.md's table of hostile cases (its header \"" << header
+                << "...\") has no row for " << key;
 }
 
 // `reason` appears in what the students see for the broken tasks (the items' outputs), or, with
@@ -344,7 +360,7 @@ Outcome check(const std::string& name, const fs::path& dir, const fs::path& subm
   }
   expectHonestScore(o.graded, o.rubric, c.broken, c.broken.empty() ? nullptr : &twin, c.exact);
   expectReason(o.graded, o.rubric, c.broken, c.reason);
-  expectDocumentedScore(name, o.graded);
+  expectDocumentedScore(name, o.graded, o.rubric);
   return o;
 }
 
