@@ -101,8 +101,8 @@ file(GENERATE OUTPUT ${A6_KIT_PCH} CONTENT
 # the same bytes as the compiler's, which a second build or a copy of the checkout reuses.
 add_custom_command(
   OUTPUT ${A6_KIT_PCH}.gch
-  COMMAND ${CMAKE_CXX_COMPILER_LAUNCHER} ${CMAKE_CXX_COMPILER} ${A6_KIT_COMPILE_FLAGS} -x c++-header ${A6_KIT_PCH}
-          -o ${A6_KIT_PCH}.gch
+  COMMAND ${CMAKE_CXX_COMPILER_LAUNCHER} ${CMAKE_CXX_COMPILER} ${A6_KIT_COMPILE_FLAGS}
+          -x c++-header ${A6_KIT_PCH} -o ${A6_KIT_PCH}.gch
   DEPENDS ${A6_KIT_PCH} ${staged_headers}
   COMMENT "Precompiling the grader kit's header"
   VERBATIM)
