@@ -1,8 +1,9 @@
-// The harness's plain data as JSON (see wire.h for the encoding).
+// The harness's plain data as JSON documents, sent as CBOR (see wire.h for the encoding).
 #include "harness/wire.h"
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cinttypes>
 #include <cmath>
@@ -44,12 +45,22 @@ double fromBits(std::uint64_t bits) {
 
 // Prefixes the message of a Malformed thrown by `body` with `where` ("states[2]: ...").
 template <typename Body>
-auto within(const std::string& where, Body&& body) -> decltype(body()) {
+auto within(const char* where, Body&& body) -> decltype(body()) {
   try {
     return body();
   } catch (const Malformed& e) {
     // "states" + "[2]..." reads "states[2]...", anything else gets a colon.
-    throw Malformed(where + (e.what()[0] == '[' ? "" : ": ") + e.what());
+    throw Malformed(std::string(where) + (e.what()[0] == '[' ? "" : ": ") + e.what());
+  }
+}
+
+// The same for item `k` of a list ("[2]"), whose name is written only when it is needed.
+template <typename Body>
+auto withinItem(std::size_t k, Body&& body) -> decltype(body()) {
+  try {
+    return body();
+  } catch (const Malformed& e) {
+    throw Malformed("[" + std::to_string(k) + "]" + (e.what()[0] == '[' ? "" : ": ") + e.what());
   }
 }
 
@@ -88,11 +99,20 @@ int toInt(const json& v) {
   return static_cast<int>(i);
 }
 
+// A string's text as valid UTF-8: CBOR's strings are whatever bytes the probe sent, so bad
+// bytes become U+FFFD (nlohmann's replacing writer does it; ASCII, nearly every string, as is).
+std::string textOf(const json& v) {
+  const std::string& s = v.get_ref<const std::string&>();
+  if (std::all_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }))
+    return s;
+  return json::parse(v.dump(-1, ' ', false, json::error_handler_t::replace)).get<std::string>();
+}
+
 std::string getString(const json& j, const char* name) {
   const json& v = field(j, name);
   if (!v.is_string())
     throw Malformed(std::string(name) + ": expected a string, got " + v.type_name());
-  return v.get<std::string>();
+  return textOf(v);
 }
 
 // Vec2 -------------------------------------------------------------------------------------------
@@ -104,8 +124,8 @@ Vec2 toVec(const json& j) {
     throw Malformed(std::string("expected [x, y], got ") +
                     (j.is_array() ? "an array of " + std::to_string(j.size()) : j.type_name()));
   }
-  return Vec2(within("[0]", [&] { return decodeDouble(j[0]); }),
-              within("[1]", [&] { return decodeDouble(j[1]); }));
+  return Vec2(withinItem(0, [&] { return decodeDouble(j[0]); }),
+              withinItem(1, [&] { return decodeDouble(j[1]); }));
 }
 
 // Mat2, row by row: [[a00, a01], [a10, a11]] ----------------------------------------------------
@@ -120,8 +140,8 @@ Mat2 toMat(const json& j) {
                     (j.is_array() ? "an array of " + std::to_string(j.size()) : j.type_name()));
   }
   Mat2 m;
-  m.row(0) = within("[0]", [&] { return toVec(j[0]); }).transpose();
-  m.row(1) = within("[1]", [&] { return toVec(j[1]); }).transpose();
+  m.row(0) = withinItem(0, [&] { return toVec(j[0]); }).transpose();
+  m.row(1) = withinItem(1, [&] { return toVec(j[1]); }).transpose();
   return m;
 }
 
@@ -141,7 +161,7 @@ auto toList(const json& j, Decode&& decode) -> std::vector<decltype(decode(j))> 
   std::vector<decltype(decode(j))> out;
   out.reserve(j.size());
   for (std::size_t k = 0; k < j.size(); ++k) {
-    out.push_back(within("[" + std::to_string(k) + "]", [&] { return decode(j[k]); }));
+    out.push_back(withinItem(k, [&] { return decode(j[k]); }));
   }
   return out;
 }
@@ -159,7 +179,7 @@ std::string enumName(E value, const std::pair<E, const char*> (&names)[N]) {
 template <typename E, std::size_t N>
 E enumValue(const json& j, const std::pair<E, const char*> (&names)[N]) {
   if (!j.is_string()) throw Malformed(std::string("expected a string, got ") + j.type_name());
-  const std::string text = j.get<std::string>();
+  const std::string text = textOf(j);
   for (const auto& [e, name] : names) {
     if (text == name) return e;
   }
@@ -228,7 +248,7 @@ void decodeValue(const json& j, bool& x) {
 }
 void decodeValue(const json& j, std::string& x) {
   if (!j.is_string()) throw Malformed(std::string("expected a string, got ") + j.type_name());
-  x = j.get<std::string>();
+  x = textOf(j);
 }
 void decodeValue(const json& j, Vec2& x) { x = toVec(j); }
 void decodeValue(const json& j, Mat2& x) { x = toMat(j); }
@@ -358,7 +378,7 @@ json encodeOutcomeAnd(const Result& r) {
 }
 template <typename Result>
 Result decodeOutcomeAnd(const std::string& what, const json& j) {
-  return within(what, [&] {
+  return within(what.c_str(), [&] {
     Result r;
     if (startResult(j, r)) return r;
     Reader reader{j};
@@ -374,7 +394,7 @@ using KindAt = std::variant_alternative_t<K, harness::Request>;
 template <std::size_t K>
 bool decodeIfKind(const std::string& kind, const json& body, harness::Request& out) {
   if (kind != KindAt<K>::kKind) return false;
-  out.emplace<K>(within(kind, [&] { return decodeAsValue<KindAt<K>>(body); }));
+  out.emplace<K>(within(kind.c_str(), [&] { return decodeAsValue<KindAt<K>>(body); }));
   return true;
 }
 template <std::size_t... K>
@@ -441,21 +461,23 @@ json serve(harness::StudentCode& code, const json& message) {
 
 // Framing ----------------------------------------------------------------------------------------
 
-std::string dump(const json& message) {
-  return message.dump(-1, ' ', false, json::error_handler_t::replace);
+std::string bytesOf(const json& message) {
+  std::string bytes;
+  json::to_cbor(message, bytes);
+  return bytes;
 }
 
 std::string frame(const json& message) {
-  const std::string text = dump(message);
-  if (text.size() > kMaxFrameBytes) {
-    throw Malformed("message of " + std::to_string(text.size()) + " bytes is over the limit of " +
+  const std::string bytes = bytesOf(message);
+  if (bytes.size() > kMaxFrameBytes) {
+    throw Malformed("message of " + std::to_string(bytes.size()) + " bytes is over the limit of " +
                     std::to_string(kMaxFrameBytes) + " bytes");
   }
-  const auto n = static_cast<std::uint32_t>(text.size());
+  const auto n = static_cast<std::uint32_t>(bytes.size());
   std::string out;
-  out.reserve(4 + text.size());
+  out.reserve(4 + bytes.size());
   for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>((n >> (8 * k)) & 0xff));
-  out += text;
+  out += bytes;
   return out;
 }
 
@@ -464,11 +486,11 @@ std::uint32_t frameLength(const unsigned char header[4]) {
          static_cast<std::uint32_t>(header[2]) << 16 | static_cast<std::uint32_t>(header[3]) << 24;
 }
 
-json parse(const std::string& text) {
+json messageOf(const std::string& bytes) {
   try {
-    return json::parse(text);
+    return json::from_cbor(bytes);
   } catch (const json::exception& e) {
-    throw Malformed(std::string("not JSON: ") + e.what());
+    throw Malformed(std::string("not CBOR: ") + e.what());
   }
 }
 

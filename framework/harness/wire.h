@@ -1,18 +1,21 @@
-// The harness's requests and results as JSON, for the pipe between the grader and the probe.
+// The harness's requests and results as JSON documents (nlohmann::json), and those documents
+// as bytes on the pipe between the grader and the probe: CBOR (RFC 8949), nlohmann's binary
+// form of the same document. CBOR carries a double as its 8 (or, where exact, 4) bytes: no
+// number is printed or parsed as text (with JSON text, the largest part of a grading's CPU).
 //
 // Doubles must survive the trip exactly, NaN and infinities included (a NaN from student code
 // must reach the grader as NaN): encode every double so that decode(encode(x)) is bit-identical.
 //
 // Design note: the encoding.
-// A finite double is a JSON number, written by nlohmann::json in its shortest round-trip form
-// (-0.0 as "-0.0") and read back with strtod, which is exact. JSON has no NaN or infinity, so
-// those are strings: "inf", "-inf", "nan" (the positive quiet NaN), "-nan" (the negative one,
-// what 0.0/0.0 gives on x86), and "nan:0x7ff0000000000001" for any other NaN, with its bits.
-// Vectors are [x, y]; structures are objects keyed by their C++ field names; enums are
-// lower-case strings. Text that is not valid UTF-8 (an exception message from student code) is
-// written with U+FFFD in place of the bad bytes, never refused.
+// A finite double is a number (-0.0 keeps its sign). NaN and infinities are strings, as they
+// would have to be in JSON text: "inf", "-inf", "nan" (the positive quiet NaN), "-nan" (the
+// negative one, what 0.0/0.0 gives on x86), and "nan:0x7ff0000000000001" for any other NaN,
+// with its bits. Vectors are [x, y]; structures are objects keyed by their C++ field names;
+// enums are lower-case strings. Text that is not valid UTF-8 (an exception message from
+// student code, or any bytes a probe sends) is decoded with U+FFFD in place of the bad bytes,
+// never refused.
 //
-// Framing on a byte stream: a 4-byte little-endian length, then that many bytes of JSON text.
+// Framing on a byte stream: a 4-byte little-endian length, then that many bytes of CBOR.
 // A length above kMaxFrameBytes is garbage, never a reason to allocate.
 #pragma once
 
@@ -68,15 +71,15 @@ nlohmann::json serve(harness::StudentCode& code, const nlohmann::json& request);
 /// The largest message either side accepts, bytes (a longer announced length is garbage).
 constexpr std::size_t kMaxFrameBytes = std::size_t{256} << 20;
 
-/// JSON text of `message` (invalid UTF-8 replaced, never throws for that).
-std::string dump(const nlohmann::json& message);
-/// The 4-byte little-endian length, then dump(message). Throws Malformed when the text is
-/// longer than kMaxFrameBytes.
+/// The bytes of `message` (CBOR).
+std::string bytesOf(const nlohmann::json& message);
+/// The 4-byte little-endian length, then bytesOf(message). Throws Malformed when the bytes are
+/// more than kMaxFrameBytes.
 std::string frame(const nlohmann::json& message);
 /// The length announced by a 4-byte header.
 std::uint32_t frameLength(const unsigned char header[4]);
-/// Parses a message's text; throws Malformed ("not JSON: ...") on bad text.
-nlohmann::json parse(const std::string& text);
+/// A message back from its bytes; throws Malformed ("not CBOR: ...") on bad bytes.
+nlohmann::json messageOf(const std::string& bytes);
 
 /// Blocking helpers for the probe's side of the pipe (the grader uses its own, with deadlines).
 /// readFrame: false at a clean end of stream (no byte of a new frame); throws Malformed on a

@@ -46,25 +46,30 @@ Outcome failure(Fault fault, std::string words) {
 
 constexpr int kProbeRequestFd = 3;  // the probe reads requests here
 constexpr int kProbeAnswerFd = 4;   // and answers here
-// The longest answer accepted, bytes: five times the longest the solution gives (805 KB, the
-// cloth scenes' states), so that a6_grade's memory stays bounded whatever a probe sends.
+// The longest answer accepted, bytes: about twice the longest the solution gives (1.97 MB of
+// CBOR, a scene's states; 3.2 MB as JSON text), so that a6_grade's memory stays bounded
+// whatever a probe sends.
 constexpr std::size_t kMaxAnswerBytes = std::size_t{4} << 20;
 // What a probe may write in its work folder, bytes (a tmpfs of this size, as root).
 constexpr std::size_t kWorkDirBytes = std::size_t{16} << 20;
 // Answers nest a few levels (an object of arrays of states of vectors); deeper is garbage.
 constexpr int kMaxAnswerDepth = 12;
+// Values in one answer, at most: four times the most one of the solution's answers holds
+// (240,005). One byte of CBOR may be a whole value (an empty map: a document node and a map,
+// about 80 bytes of memory), so the count, not the bytes, bounds the document's memory.
+constexpr std::size_t kMaxAnswerValues = std::size_t{1} << 20;
 
-// Checks an answer's nesting before it is parsed into a document (whose nodes take many times
-// the text's bytes, the deeper the more): a pass that keeps nothing.
-class NestingCheck final : public json::json_sax_t {
+// Checks an answer's nesting and size before it is decoded into a document (whose nodes take
+// many times the message's bytes): a pass over the bytes that keeps nothing.
+class ShapeCheck final : public json::json_sax_t {
  public:
-  bool null() override { return true; }
-  bool boolean(bool) override { return true; }
-  bool number_integer(number_integer_t) override { return true; }
-  bool number_unsigned(number_unsigned_t) override { return true; }
-  bool number_float(number_float_t, const string_t&) override { return true; }
-  bool string(string_t&) override { return true; }
-  bool binary(binary_t&) override { return true; }
+  bool null() override { return counted(); }
+  bool boolean(bool) override { return counted(); }
+  bool number_integer(number_integer_t) override { return counted(); }
+  bool number_unsigned(number_unsigned_t) override { return counted(); }
+  bool number_float(number_float_t, const string_t&) override { return counted(); }
+  bool string(string_t&) override { return counted(); }
+  bool binary(binary_t&) override { return counted(); }
   bool start_object(std::size_t) override { return deeper(); }
   bool key(string_t&) override { return true; }
   bool end_object() override { return --depth_ >= 0; }
@@ -74,26 +79,37 @@ class NestingCheck final : public json::json_sax_t {
     return false;
   }
 
-  bool tooDeep() const { return tooDeep_; }
+  // Why the answer is refused before decoding, or "".
+  std::string refusal() const {
+    if (tooDeep_)
+      return "an answer nested deeper than " + std::to_string(kMaxAnswerDepth) + " levels";
+    if (tooMany_) return "an answer of more than " + std::to_string(kMaxAnswerValues) + " values";
+    return "";
+  }
 
  private:
+  bool counted() {
+    tooMany_ = ++values_ > kMaxAnswerValues;
+    return !tooMany_;
+  }
   bool deeper() {
     tooDeep_ = ++depth_ > kMaxAnswerDepth;
-    return !tooDeep_;
+    return !tooDeep_ && counted();
   }
   int depth_ = 0;
+  std::size_t values_ = 0;
   bool tooDeep_ = false;
+  bool tooMany_ = false;
 };
 
-// Parses an answer whose nesting is within kMaxAnswerDepth; throws otherwise (wire::Malformed for
-// text that is not JSON).
-json parseAnswer(const std::string& body) {
-  NestingCheck check;
-  if (!json::sax_parse(body, &check) && check.tooDeep()) {
-    throw std::runtime_error("an answer nested deeper than " + std::to_string(kMaxAnswerDepth) +
-                             " levels");
+// Decodes an answer whose nesting and size are within bounds; throws otherwise (wire::Malformed
+// for bytes that are not CBOR).
+json decodeAnswerBytes(const std::string& body) {
+  ShapeCheck check;
+  if (!json::sax_parse(body, &check, json::input_format_t::cbor) && !check.refusal().empty()) {
+    throw std::runtime_error(check.refusal());
   }
-  return wire::parse(body);  // "not JSON: ..." for what the check found no JSON
+  return wire::messageOf(body);  // "not CBOR: ..." for what the check found no CBOR
 }
 
 std::string seconds(double s) {
@@ -574,7 +590,7 @@ struct ProbeClient::Impl {
     if (why.ok()) why = exchange(bytes, deadline, body);
     if (!why.ok()) return harness::failedAnswer(request, std::move(why));
     try {
-      harness::Answer answer = wire::decodeAnswer(request.index(), parseAnswer(body));
+      harness::Answer answer = wire::decodeAnswer(request.index(), decodeAnswerBytes(body));
       Outcome& outcome = harness::outcomeOf(answer);
       if (!outcome.error.empty()) outcome.error = reworded(std::move(outcome.error));
       return answer;

@@ -672,6 +672,10 @@ TEST(Hostile, SendsTheCostliestAnswersToParse) {
   const double peak = o.graded.results["extra_data"].value("grader_peak_rss_mib", 1e9);
   std::printf("[ hostile  ] a6_grade's peak RSS against maximal answers: %.1f MiB\n", peak);
   EXPECT_LT(peak, 300);
+  // Each refused for what it is, before it was decoded (the checks' output says why).
+  const std::string said = o.graded.results.dump();
+  EXPECT_NE(said.find("garbage from the probe: an answer of more than"), std::string::npos);
+  EXPECT_NE(said.find("garbage from the probe: an answer nested deeper than"), std::string::npos);
 }
 
 // The compiler sees an allow-list of the machine: not another readable checkout of the
