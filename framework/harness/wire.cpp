@@ -1,4 +1,4 @@
-// The harness's plain data as JSON documents, sent as CBOR (see wire.h for the encoding).
+// The harness's plain data as JSON documents, sent as MessagePack (see wire.h for the encoding).
 #include "harness/wire.h"
 
 #include <unistd.h>
@@ -99,9 +99,9 @@ int toInt(const json& v) {
   return static_cast<int>(i);
 }
 
-// A string's text as valid UTF-8: CBOR's strings are whatever bytes the probe sent, so bad
+// A string's text as valid UTF-8: MessagePack's strings are whatever bytes the probe sent, so bad
 // bytes become U+FFFD (nlohmann's replacing writer does it; ASCII, nearly every string, as is).
-std::string textOf(const json& v) {
+std::string validUtf8(const json& v) {
   const std::string& s = v.get_ref<const std::string&>();
   if (std::all_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }))
     return s;
@@ -112,7 +112,7 @@ std::string getString(const json& j, const char* name) {
   const json& v = field(j, name);
   if (!v.is_string())
     throw Malformed(std::string(name) + ": expected a string, got " + v.type_name());
-  return textOf(v);
+  return validUtf8(v);
 }
 
 // Vec2 -------------------------------------------------------------------------------------------
@@ -179,7 +179,7 @@ std::string enumName(E value, const std::pair<E, const char*> (&names)[N]) {
 template <typename E, std::size_t N>
 E enumValue(const json& j, const std::pair<E, const char*> (&names)[N]) {
   if (!j.is_string()) throw Malformed(std::string("expected a string, got ") + j.type_name());
-  const std::string text = textOf(j);
+  const std::string text = validUtf8(j);
   for (const auto& [e, name] : names) {
     if (text == name) return e;
   }
@@ -248,7 +248,7 @@ void decodeValue(const json& j, bool& x) {
 }
 void decodeValue(const json& j, std::string& x) {
   if (!j.is_string()) throw Malformed(std::string("expected a string, got ") + j.type_name());
-  x = textOf(j);
+  x = validUtf8(j);
 }
 void decodeValue(const json& j, Vec2& x) { x = toVec(j); }
 void decodeValue(const json& j, Mat2& x) { x = toMat(j); }
@@ -359,7 +359,7 @@ double decodeDouble(const json& j) {
       if (hex && std::isnan(x)) return x;
     }
     throw Malformed("expected a number, \"inf\", \"-inf\" or a NaN, got the string \"" +
-                    s.substr(0, 40) + "\"");
+                    validUtf8(j).substr(0, 40) + "\"");
   }
   throw Malformed(std::string("expected a number, got ") + j.type_name());
 }
@@ -461,14 +461,14 @@ json serve(harness::StudentCode& code, const json& message) {
 
 // Framing ----------------------------------------------------------------------------------------
 
-std::string bytesOf(const json& message) {
+std::string toBytes(const json& message) {
   std::string bytes;
-  json::to_cbor(message, bytes);
+  json::to_msgpack(message, bytes);
   return bytes;
 }
 
 std::string frame(const json& message) {
-  const std::string bytes = bytesOf(message);
+  const std::string bytes = toBytes(message);
   if (bytes.size() > kMaxFrameBytes) {
     throw Malformed("message of " + std::to_string(bytes.size()) + " bytes is over the limit of " +
                     std::to_string(kMaxFrameBytes) + " bytes");
@@ -486,11 +486,11 @@ std::uint32_t frameLength(const unsigned char header[4]) {
          static_cast<std::uint32_t>(header[2]) << 16 | static_cast<std::uint32_t>(header[3]) << 24;
 }
 
-json messageOf(const std::string& bytes) {
+json fromBytes(const std::string& bytes) {
   try {
-    return json::from_cbor(bytes);
+    return json::from_msgpack(bytes);
   } catch (const json::exception& e) {
-    throw Malformed(std::string("not CBOR: ") + e.what());
+    throw Malformed(std::string("not MessagePack: ") + e.what());
   }
 }
 

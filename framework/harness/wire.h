@@ -1,7 +1,10 @@
 // The harness's requests and results as JSON documents (nlohmann::json), and those documents
-// as bytes on the pipe between the grader and the probe: CBOR (RFC 8949), nlohmann's binary
-// form of the same document. CBOR carries a double as its 8 (or, where exact, 4) bytes: no
-// number is printed or parsed as text (with JSON text, the largest part of a grading's CPU).
+// as bytes on the pipe between the grader and the probe: MessagePack, nlohmann's binary form of
+// the same document. It carries a double as its 8 (or, where exact, 4) bytes: no number is
+// printed or parsed as text (with JSON text, the largest part of a grading's CPU). Why not
+// CBOR, its twin: CBOR's strings may come in chunks of any number, which nlohmann reads by
+// recursion, outside any container a depth check sees; a probe could overflow the grader's
+// stack with 4 MiB of them. In MessagePack only arrays and maps nest.
 //
 // Doubles must survive the trip exactly, NaN and infinities included (a NaN from student code
 // must reach the grader as NaN): encode every double so that decode(encode(x)) is bit-identical.
@@ -13,9 +16,10 @@
 // with its bits. Vectors are [x, y]; structures are objects keyed by their C++ field names;
 // enums are lower-case strings. Text that is not valid UTF-8 (an exception message from
 // student code, or any bytes a probe sends) is decoded with U+FFFD in place of the bad bytes,
-// never refused.
+// never refused. (A decoder also takes NaN and infinities sent as numbers, which a probe could
+// write: the same values.)
 //
-// Framing on a byte stream: a 4-byte little-endian length, then that many bytes of CBOR.
+// Framing on a byte stream: a 4-byte little-endian length, then that many bytes of MessagePack.
 // A length above kMaxFrameBytes is garbage, never a reason to allocate.
 #pragma once
 
@@ -71,15 +75,15 @@ nlohmann::json serve(harness::StudentCode& code, const nlohmann::json& request);
 /// The largest message either side accepts, bytes (a longer announced length is garbage).
 constexpr std::size_t kMaxFrameBytes = std::size_t{256} << 20;
 
-/// The bytes of `message` (CBOR).
-std::string bytesOf(const nlohmann::json& message);
-/// The 4-byte little-endian length, then bytesOf(message). Throws Malformed when the bytes are
+/// The bytes of `message` (MessagePack).
+std::string toBytes(const nlohmann::json& message);
+/// The 4-byte little-endian length, then toBytes(message). Throws Malformed when the bytes are
 /// more than kMaxFrameBytes.
 std::string frame(const nlohmann::json& message);
 /// The length announced by a 4-byte header.
 std::uint32_t frameLength(const unsigned char header[4]);
-/// A message back from its bytes; throws Malformed ("not CBOR: ...") on bad bytes.
-nlohmann::json messageOf(const std::string& bytes);
+/// A message back from its bytes; throws Malformed ("not MessagePack: ...") on bad bytes.
+nlohmann::json fromBytes(const std::string& bytes);
 
 /// Blocking helpers for the probe's side of the pipe (the grader uses its own, with deadlines).
 /// readFrame: false at a clean end of stream (no byte of a new frame); throws Malformed on a

@@ -2,7 +2,8 @@
 # (a6_probe_kit, the link line A6_PROBE_LINK_*), and the client that talks to a sandboxed probe
 # (a6_probe_client). Takes a6_sandbox (sandbox/sandbox.cmake).
 
-# The harness's plain data as JSON, and the reference forces over a pipe: both ends.
+# The harness's plain data (JSON documents sent as MessagePack) and the reference forces over a
+# pipe: both ends.
 add_library(a6_wire STATIC ${PROJECT_SOURCE_DIR}/framework/harness/wire.cpp
                            ${PROJECT_SOURCE_DIR}/framework/harness/force_channel.cpp)
 target_link_libraries(a6_wire PUBLIC a6_harness_api nlohmann_json::nlohmann_json)

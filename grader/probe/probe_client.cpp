@@ -47,33 +47,36 @@ Outcome failure(Fault fault, std::string words) {
 constexpr int kProbeRequestFd = 3;  // the probe reads requests here
 constexpr int kProbeAnswerFd = 4;   // and answers here
 // The longest answer accepted, bytes: about twice the longest the solution gives (1.97 MB of
-// CBOR, a scene's states; 3.2 MB as JSON text), so that a6_grade's memory stays bounded
+// MessagePack, a scene's states; 3.2 MB as JSON text), so that a6_grade's memory stays bounded
 // whatever a probe sends.
 constexpr std::size_t kMaxAnswerBytes = std::size_t{4} << 20;
 // What a probe may write in its work folder, bytes (a tmpfs of this size, as root).
 constexpr std::size_t kWorkDirBytes = std::size_t{16} << 20;
 // Answers nest a few levels (an object of arrays of states of vectors); deeper is garbage.
 constexpr int kMaxAnswerDepth = 12;
-// Values in one answer, at most: four times the most one of the solution's answers holds
-// (240,005). One byte of CBOR may be a whole value (an empty map: a document node and a map,
-// about 80 bytes of memory), so the count, not the bytes, bounds the document's memory.
-constexpr std::size_t kMaxAnswerValues = std::size_t{1} << 20;
+// The size of the document an answer decodes to, in nodes of 16 bytes (what nlohmann::json
+// allocates, roughly: a number, true, false or null is one node; a string adds its own object,
+// 4; an array adds a vector, 2; a map adds a tree, 4; each key a tree node with its string, 6),
+// at most: about twice the most of the solution's answers (1,104,040, a scene's states). One
+// byte of MessagePack may be a whole map, so this count, not the bytes, bounds a6_grade's
+// memory (at most about 115 MB more: an array of 2 million nils, the costliest found).
+constexpr std::size_t kMaxAnswerNodes = std::size_t{1} << 21;
 
 // Checks an answer's nesting and size before it is decoded into a document (whose nodes take
 // many times the message's bytes): a pass over the bytes that keeps nothing.
 class ShapeCheck final : public json::json_sax_t {
  public:
-  bool null() override { return counted(); }
-  bool boolean(bool) override { return counted(); }
-  bool number_integer(number_integer_t) override { return counted(); }
-  bool number_unsigned(number_unsigned_t) override { return counted(); }
-  bool number_float(number_float_t, const string_t&) override { return counted(); }
-  bool string(string_t&) override { return counted(); }
-  bool binary(binary_t&) override { return counted(); }
-  bool start_object(std::size_t) override { return deeper(); }
-  bool key(string_t&) override { return true; }
+  bool null() override { return counted(1); }
+  bool boolean(bool) override { return counted(1); }
+  bool number_integer(number_integer_t) override { return counted(1); }
+  bool number_unsigned(number_unsigned_t) override { return counted(1); }
+  bool number_float(number_float_t, const string_t&) override { return counted(1); }
+  bool string(string_t&) override { return counted(4); }
+  bool binary(binary_t&) override { return counted(4); }
+  bool start_object(std::size_t) override { return deeper() && counted(4); }
+  bool key(string_t&) override { return counted(6); }
   bool end_object() override { return --depth_ >= 0; }
-  bool start_array(std::size_t) override { return deeper(); }
+  bool start_array(std::size_t) override { return deeper() && counted(2); }
   bool end_array() override { return --depth_ >= 0; }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
     return false;
@@ -83,33 +86,37 @@ class ShapeCheck final : public json::json_sax_t {
   std::string refusal() const {
     if (tooDeep_)
       return "an answer nested deeper than " + std::to_string(kMaxAnswerDepth) + " levels";
-    if (tooMany_) return "an answer of more than " + std::to_string(kMaxAnswerValues) + " values";
+    if (tooLarge_) {
+      return "an answer larger than " + std::to_string(kMaxAnswerNodes) +
+             " document nodes once decoded";
+    }
     return "";
   }
 
  private:
-  bool counted() {
-    tooMany_ = ++values_ > kMaxAnswerValues;
-    return !tooMany_;
+  bool counted(std::size_t nodes) {
+    nodes_ += nodes;
+    tooLarge_ = nodes_ > kMaxAnswerNodes;
+    return !tooLarge_;
   }
   bool deeper() {
     tooDeep_ = ++depth_ > kMaxAnswerDepth;
-    return !tooDeep_ && counted();
+    return !tooDeep_;
   }
   int depth_ = 0;
-  std::size_t values_ = 0;
+  std::size_t nodes_ = 0;
   bool tooDeep_ = false;
-  bool tooMany_ = false;
+  bool tooLarge_ = false;
 };
 
 // Decodes an answer whose nesting and size are within bounds; throws otherwise (wire::Malformed
-// for bytes that are not CBOR).
+// for bytes that are not MessagePack).
 json decodeAnswerBytes(const std::string& body) {
   ShapeCheck check;
-  if (!json::sax_parse(body, &check, json::input_format_t::cbor) && !check.refusal().empty()) {
+  if (!json::sax_parse(body, &check, json::input_format_t::msgpack) && !check.refusal().empty()) {
     throw std::runtime_error(check.refusal());
   }
-  return wire::messageOf(body);  // "not CBOR: ..." for what the check found no CBOR
+  return wire::fromBytes(body);  // "not MessagePack: ..." for what the check could not read
 }
 
 std::string seconds(double s) {

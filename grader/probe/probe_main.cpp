@@ -1,6 +1,6 @@
 // The probe: the seven student files, the framework and this main, linked into one executable
 // that the grader starts in its sandbox. It reads requests on fd 3 and answers on fd 4, each a
-// length-prefixed CBOR message (framework/harness/wire.h), until fd 3 ends.
+// length-prefixed MessagePack message (framework/harness/wire.h), until fd 3 ends.
 //
 // Design note: what protects the protocol.
 // Requests and answers travel only on fds 3 and 4; the student's stdout and stderr (fds 1, 2)
@@ -81,7 +81,7 @@ int main() {
     try {
       nlohmann::json reply;
       try {
-        reply = a6::wire::serve(*code, a6::wire::messageOf(body));
+        reply = a6::wire::serve(*code, a6::wire::fromBytes(body));
       } catch (const a6::wire::Malformed& e) {
         reply = {
             {"error", std::string("the grader sent a request the probe cannot read: ") + e.what()}};

@@ -80,8 +80,8 @@ TEST(ProbeClient, TheSolutionsProbeAnswersBitForBitAsInProcess) {
   auto same = [](const auto& viaProbe, const auto& inProcess, const char* what) {
     const harness::Outcome& outcome = harness::outcomeOf(viaProbe);
     EXPECT_TRUE(outcome.ok()) << what << ": " << outcome.error;
-    EXPECT_EQ(wire::bytesOf(wire::encodeAnswer(viaProbe)),
-              wire::bytesOf(wire::encodeAnswer(inProcess)))
+    EXPECT_EQ(wire::toBytes(wire::encodeAnswer(viaProbe)),
+              wire::toBytes(wire::encodeAnswer(inProcess)))
         << what;
   };
   same(probe.ask(harness::Request(spring(50))), local->ask(harness::Request(spring(50))),
@@ -216,8 +216,8 @@ TEST(ProbeClient, PerRequestOverheadIsSmall) {
   t0 = Clock::now();
   const harness::SimulateResult here = local->ask(sim);
   const double simInProcess = since(t0);
-  EXPECT_EQ(wire::bytesOf(wire::encodeResult<harness::SimulateRequest>(remote)),
-            wire::bytesOf(wire::encodeResult<harness::SimulateRequest>(here)));
+  EXPECT_EQ(wire::toBytes(wire::encodeResult<harness::SimulateRequest>(remote)),
+            wire::toBytes(wire::encodeResult<harness::SimulateRequest>(here)));
   // A fresh probe: start-up plus the first request.
   TempDir tmp2;
   ProbeClient fresh(kSolution, tmp2.path() / "run", Limits{});
@@ -373,7 +373,7 @@ TEST_F(HostileProbe, AbortAndExceptionsAndExitAreReportedAsSuch) {
 
 TEST_F(HostileProbe, GarbageOnTheAnswerPipeFailsTheRequestOnly) {
   const auto r = probe.ask(spring(20));
-  EXPECT_EQ(r.error.rfind("garbage from the probe: not CBOR", 0), 0u) << r.error;
+  EXPECT_EQ(r.error.rfind("garbage from the probe: not MessagePack", 0), 0u) << r.error;
   expectHealthy();
   const auto big = probe.ask(spring(22));
   EXPECT_EQ(big.error.rfind("garbage from the probe: an answer of 1073741824 bytes announced", 0),

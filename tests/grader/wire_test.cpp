@@ -40,7 +40,7 @@ double fromBits(std::uint64_t b) {
 }
 
 // Through the pipe's bytes, as the pipe does.
-json throughBytes(const json& j) { return wire::messageOf(wire::bytesOf(j)); }
+json throughBytes(const json& j) { return wire::fromBytes(wire::toBytes(j)); }
 
 // ---- distinct values for every field, special ones among them
 // -------------------------------------
@@ -223,9 +223,9 @@ T filled(Filler& f) {
   return x;
 }
 
-// Request kind K: a request filled, encoded under its kind, sent through text, decoded; every
-// field the same, and the body holds exactly the listed fields. Then its result likewise, after
-// its outcome ("error" and "fault").
+// Request kind K: a request filled, encoded under its kind, sent through the pipe's bytes, decoded;
+// every field the same, and the body holds exactly the listed fields. Then its result likewise,
+// after its outcome ("error" and "fault").
 template <std::size_t K>
 void kindSurvives(Filler& f) {
   using R = std::variant_alternative_t<K, harness::Request>;
@@ -281,9 +281,9 @@ TEST(WireDoubles, SpecialValuesSurviveBitForBit) {
                                       fromBits(0xfff123456789abcdull),
                                       fromBits(0x7fffffffffffffffull)};
   for (double x : values) {
-    const json text = throughBytes(json::array({wire::encodeDouble(x)}));
-    const double back = wire::decodeDouble(text[0]);
-    EXPECT_EQ(bits(x), bits(back)) << "value " << x << " encoded as " << text.dump();
+    const json sent = throughBytes(json::array({wire::encodeDouble(x)}));
+    const double back = wire::decodeDouble(sent[0]);
+    EXPECT_EQ(bits(x), bits(back)) << "value " << x << " encoded as " << sent.dump();
   }
 }
 
@@ -387,8 +387,8 @@ TEST(WireResults, AnErrorAloneIsAWholeResultAndKeepsItsText) {
 TEST(WireResults, InvalidUtf8InAnErrorIsReplacedNotRefused) {
   harness::SpringForceResult r;
   r.error = "exception: bad bytes \xff\xfe here";
-  const std::string bytes = wire::bytesOf(wire::encodeResult<harness::SpringForceRequest>(r));
-  const auto back = wire::decodeResult<harness::SpringForceRequest>(wire::messageOf(bytes));
+  const std::string bytes = wire::toBytes(wire::encodeResult<harness::SpringForceRequest>(r));
+  const auto back = wire::decodeResult<harness::SpringForceRequest>(wire::fromBytes(bytes));
   EXPECT_NE(back.error.find("bad bytes"), std::string::npos);
   EXPECT_NE(back.error.find("\xef\xbf\xbd"), std::string::npos) << "U+FFFD in place of bad bytes";
 }
@@ -407,13 +407,13 @@ std::string errorOf(const std::function<void()>& f) {
   return "";
 }
 
-TEST(WireMalformed, BadBytesSayTheyAreNotCbor) {
-  // JSON text, as a probe written for another wire would send, and a CBOR message cut short.
-  const std::string cut = wire::bytesOf(json{{"error", ""}, {"force", {1, 2}}});
+TEST(WireMalformed, BadBytesSayTheyAreNotMessagePack) {
+  // JSON text, as a probe written for another wire would send, and a message cut short.
+  const std::string cut = wire::toBytes(json{{"error", ""}, {"force", {1, 2}}});
   for (const std::string& bad :
        {std::string("{\"error\": \"\", \"force\": [1, 2]}"), cut.substr(0, cut.size() - 3)}) {
-    const std::string e = errorOf([&] { wire::messageOf(bad); });
-    EXPECT_EQ(e.rfind("not CBOR", 0), 0u) << e;
+    const std::string e = errorOf([&] { wire::fromBytes(bad); });
+    EXPECT_EQ(e.rfind("not MessagePack", 0), 0u) << e;
   }
 }
 
@@ -537,12 +537,12 @@ TEST(WireServe, AnExceptionEscapingTheCodeIsAnError) {
 TEST(WireFraming, AFrameIsALittleEndianLengthThenTheBytes) {
   const json message = {{"kind", "x"}, {"body", std::string(300, 'a')}};
   const std::string f = wire::frame(message);
-  const std::string text = wire::bytesOf(message);
-  ASSERT_EQ(f.size(), text.size() + 4);
-  EXPECT_EQ(wire::frameLength(reinterpret_cast<const unsigned char*>(f.data())), text.size());
-  EXPECT_EQ(static_cast<unsigned char>(f[0]), text.size() & 0xff);
-  EXPECT_EQ(static_cast<unsigned char>(f[1]), (text.size() >> 8) & 0xff);
-  EXPECT_EQ(f.substr(4), text);
+  const std::string bytes = wire::toBytes(message);
+  ASSERT_EQ(f.size(), bytes.size() + 4);
+  EXPECT_EQ(wire::frameLength(reinterpret_cast<const unsigned char*>(f.data())), bytes.size());
+  EXPECT_EQ(static_cast<unsigned char>(f[0]), bytes.size() & 0xff);
+  EXPECT_EQ(static_cast<unsigned char>(f[1]), (bytes.size() >> 8) & 0xff);
+  EXPECT_EQ(f.substr(4), bytes);
 }
 
 TEST(WireFraming, FramesRoundTripThroughAPipeAndBadOnesAreRefused) {
@@ -556,9 +556,9 @@ TEST(WireFraming, FramesRoundTripThroughAPipeAndBadOnesAreRefused) {
   close(fds[1]);
   std::string body;
   ASSERT_TRUE(wire::readFrame(fds[0], body));
-  EXPECT_EQ(wire::messageOf(body), first);
+  EXPECT_EQ(wire::fromBytes(body), first);
   ASSERT_TRUE(wire::readFrame(fds[0], body));
-  EXPECT_EQ(wire::messageOf(body), second);
+  EXPECT_EQ(wire::fromBytes(body), second);
   EXPECT_NE(errorOf([&] { wire::readFrame(fds[0], body); }).find("over the limit"),
             std::string::npos);
   close(fds[0]);
