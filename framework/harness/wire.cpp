@@ -99,20 +99,28 @@ int toInt(const json& v) {
   return static_cast<int>(i);
 }
 
-// A string's text as valid UTF-8: MessagePack's strings are whatever bytes the probe sent, so bad
-// bytes become U+FFFD (nlohmann's replacing writer does it; ASCII, nearly every string, as is).
-std::string validUtf8(const json& v) {
-  const std::string& s = v.get_ref<const std::string&>();
+// The longest text a string from the wire keeps, bytes: an error message of megabytes would be
+// kept for every failed request of a check, in every report of it.
+constexpr std::size_t kMaxTextBytes = 4096;
+
+// A string's text, at most kMaxTextBytes of it, as valid UTF-8: MessagePack's strings are
+// whatever bytes the probe sent, so bad bytes become U+FFFD (nlohmann's replacing writer does
+// it; ASCII, nearly every string, as is).
+std::string textOf(const json& v) {
+  std::string s = v.get_ref<const std::string&>().substr(0, kMaxTextBytes);
+  if (const std::size_t size = v.get_ref<const std::string&>().size(); size > s.size())
+    s += " (" + std::to_string(size - s.size()) + " more bytes of this text cut)";
   if (std::all_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }))
     return s;
-  return json::parse(v.dump(-1, ' ', false, json::error_handler_t::replace)).get<std::string>();
+  return json::parse(json(s).dump(-1, ' ', false, json::error_handler_t::replace))
+      .get<std::string>();
 }
 
 std::string getString(const json& j, const char* name) {
   const json& v = field(j, name);
   if (!v.is_string())
     throw Malformed(std::string(name) + ": expected a string, got " + v.type_name());
-  return validUtf8(v);
+  return textOf(v);
 }
 
 // Vec2 -------------------------------------------------------------------------------------------
@@ -124,8 +132,9 @@ Vec2 toVec(const json& j) {
     throw Malformed(std::string("expected [x, y], got ") +
                     (j.is_array() ? "an array of " + std::to_string(j.size()) : j.type_name()));
   }
-  return Vec2(withinItem(0, [&] { return decodeDouble(j[0]); }),
-              withinItem(1, [&] { return decodeDouble(j[1]); }));
+  const double x = withinItem(0, [&] { return decodeDouble(j[0]); });  // in order: the first
+  const double y = withinItem(1, [&] { return decodeDouble(j[1]); });  // bad item is named
+  return Vec2(x, y);
 }
 
 // Mat2, row by row: [[a00, a01], [a10, a11]] ----------------------------------------------------
@@ -179,7 +188,7 @@ std::string enumName(E value, const std::pair<E, const char*> (&names)[N]) {
 template <typename E, std::size_t N>
 E enumValue(const json& j, const std::pair<E, const char*> (&names)[N]) {
   if (!j.is_string()) throw Malformed(std::string("expected a string, got ") + j.type_name());
-  const std::string text = validUtf8(j);
+  const std::string text = textOf(j);
   for (const auto& [e, name] : names) {
     if (text == name) return e;
   }
@@ -248,7 +257,7 @@ void decodeValue(const json& j, bool& x) {
 }
 void decodeValue(const json& j, std::string& x) {
   if (!j.is_string()) throw Malformed(std::string("expected a string, got ") + j.type_name());
-  x = validUtf8(j);
+  x = textOf(j);
 }
 void decodeValue(const json& j, Vec2& x) { x = toVec(j); }
 void decodeValue(const json& j, Mat2& x) { x = toMat(j); }
@@ -359,7 +368,7 @@ double decodeDouble(const json& j) {
       if (hex && std::isnan(x)) return x;
     }
     throw Malformed("expected a number, \"inf\", \"-inf\" or a NaN, got the string \"" +
-                    validUtf8(j).substr(0, 40) + "\"");
+                    textOf(j).substr(0, 40) + "\"");
   }
   throw Malformed(std::string("expected a number, got ") + j.type_name());
 }

@@ -393,6 +393,16 @@ TEST(WireResults, InvalidUtf8InAnErrorIsReplacedNotRefused) {
   EXPECT_NE(back.error.find("\xef\xbf\xbd"), std::string::npos) << "U+FFFD in place of bad bytes";
 }
 
+TEST(WireResults, ALongErrorIsCutToItsFirst4KiB) {
+  harness::SpringForceResult r;
+  r.error = "exception: " + std::string(1 << 20, 'x');
+  const auto back = wire::decodeResult<harness::SpringForceRequest>(
+      wire::fromBytes(wire::toBytes(wire::encodeResult<harness::SpringForceRequest>(r))));
+  EXPECT_EQ(back.error.substr(0, 4096), r.error.substr(0, 4096));
+  EXPECT_EQ(back.error.substr(4096),
+            " (" + std::to_string(r.error.size() - 4096) + " more bytes of this text cut)");
+}
+
 // ---- malformed input
 // ---------------------------------------------------------------------------------------
 
