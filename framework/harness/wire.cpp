@@ -43,14 +43,18 @@ double fromBits(std::uint64_t bits) {
 
 // Structure access with context -----------------------------------------------------------------
 
+// `e` with `where` before it: "states" + "[2]..." reads "states[2]...", anything else gets a colon.
+Malformed prefixed(const std::string& where, const Malformed& e) {
+  return Malformed(where + (e.what()[0] == '[' ? "" : ": ") + e.what());
+}
+
 // Prefixes the message of a Malformed thrown by `body` with `where` ("states[2]: ...").
 template <typename Body>
 auto within(const char* where, Body&& body) -> decltype(body()) {
   try {
     return body();
   } catch (const Malformed& e) {
-    // "states" + "[2]..." reads "states[2]...", anything else gets a colon.
-    throw Malformed(std::string(where) + (e.what()[0] == '[' ? "" : ": ") + e.what());
+    throw prefixed(where, e);
   }
 }
 
@@ -60,7 +64,7 @@ auto withinItem(std::size_t k, Body&& body) -> decltype(body()) {
   try {
     return body();
   } catch (const Malformed& e) {
-    throw Malformed("[" + std::to_string(k) + "]" + (e.what()[0] == '[' ? "" : ": ") + e.what());
+    throw prefixed("[" + std::to_string(k) + "]", e);
   }
 }
 
@@ -107,9 +111,10 @@ constexpr std::size_t kMaxTextBytes = 4096;
 // whatever bytes the probe sent, so bad bytes become U+FFFD (nlohmann's replacing writer does
 // it; ASCII, nearly every string, as is).
 std::string textOf(const json& v) {
-  std::string s = v.get_ref<const std::string&>().substr(0, kMaxTextBytes);
-  if (const std::size_t size = v.get_ref<const std::string&>().size(); size > s.size())
-    s += " (" + std::to_string(size - s.size()) + " more bytes of this text cut)";
+  const std::string& sent = v.get_ref<const std::string&>();
+  std::string s = sent.substr(0, kMaxTextBytes);
+  if (sent.size() > s.size())
+    s += " (" + std::to_string(sent.size() - s.size()) + " more bytes of this text cut)";
   if (std::all_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }))
     return s;
   return json::parse(json(s).dump(-1, ' ', false, json::error_handler_t::replace))

@@ -113,8 +113,8 @@ class ShapeCheck final : public json::json_sax_t {
 // for bytes that are not MessagePack).
 json decodeAnswerBytes(const std::string& body) {
   ShapeCheck check;
-  if (!json::sax_parse(body, &check, json::input_format_t::msgpack) && !check.refusal().empty()) {
-    throw std::runtime_error(check.refusal());
+  if (!json::sax_parse(body, &check, json::input_format_t::msgpack)) {
+    if (const std::string why = check.refusal(); !why.empty()) throw std::runtime_error(why);
   }
   return wire::fromBytes(body);  // "not MessagePack: ..." for what the check could not read
 }
