@@ -618,9 +618,11 @@ TEST(Hostile, NaN) { checkFixture("nan", Case({1}, "actual:   (nan, nan)").crash
 TEST(Hostile, ThrowsAnException) {
   const Outcome o =
       checkFixture("exception", Case({1}, "hostile: thrown from computeForce").crashes());
-  // Its message of 4 MiB, kept for each failed request, is cut where the answer is decoded
+  // Its message of nearly 4 MiB, kept for each failed request, is cut where the answer is decoded
   // (to 4 KiB, WireResults.ALongErrorIsCutToItsFirst4KiB): 106 MiB instead of 1,960.
   EXPECT_LT(o.graded.results["extra_data"].value("grader_peak_rss_mib", 1e9), 300);
+  // Every answer is decoded: none is refused for its size, unread.
+  EXPECT_EQ(readAll(o.dir / "out" / "report.html").find("bytes announced"), std::string::npos);
 }
 
 TEST(Hostile, ExitsInItsCode) {
