@@ -63,11 +63,13 @@ example_grade_summary() {
 }
 
 # results.json, shortened: the top level, three entries (a failed one, extra credit, one shown
-# after the due date) with their outputs cut, and two checks of extra_data.tests.
+# after the due date) with their outputs cut and at most two of their checks named, and two
+# checks of extra_data.tests.
 example_results_json() {
   alice_graded
   jq '(.tests |= [.[] | select(.number == "1.2" or .number == "1.3" or .number == "4.1")]
         | .tests[].output |= (if length > 300 then .[0:300] + "..." else . end)
+        | .tests[].extra_data.checks |= (if length > 2 then .[0:2] + ["..."] else . end)
         | .extra_data.tests |= (to_entries | .[0:2] | from_entries + {"...": "..."})
         | .extra_data.notes |= [])' \
     "$scratch/graded/alice/results.json"

@@ -95,6 +95,11 @@ ItemResult itemOf(const Json& t) {
   const Json& extra = objectAt(t, "extra_data");
   item.mistake = stringAt(extra, "mistake");
   item.mistakeText = stringAt(extra, "mistake_text");
+  if (extra.contains("checks") && extra["checks"].is_array()) {
+    for (const Json& check : extra["checks"]) {
+      if (check.is_string()) item.checks.push_back(check.get<std::string>());
+    }
+  }
   return item;
 }
 
@@ -272,9 +277,11 @@ int taskOfCheck(const std::string& check) {
 
 namespace {
 
+std::string itemKey(const ItemResult& item) { return item.number + "\t" + item.name; }
+
 void addItems(const SubmissionResult& s, std::map<std::string, ItemStats>& items) {
   for (const ItemResult& item : s.items) {
-    ItemStats& st = items[item.number + "\t" + item.name];
+    ItemStats& st = items[itemKey(item)];
     st.name = item.name;
     st.number = item.number;
     st.task = item.task;
@@ -310,6 +317,23 @@ void finishItems(std::map<std::string, ItemStats>& items, ClassInsights& c) {
   });
 }
 
+// What each check cost: a grading's points lost on an item (what the item is worth, less its
+// score), shared evenly among the item's checks that the grading failed.
+void costChecks(const SubmissionResult& s, const std::map<std::string, ItemStats>& items,
+                std::map<std::string, CheckStats>& checks) {
+  for (const ItemResult& item : s.items) {
+    std::vector<std::string> failed;
+    for (const std::string& name : item.checks) {
+      const auto ran = s.checks.find(name);
+      if (ran == s.checks.end()) continue;
+      checks[name].costed = true;
+      if (!ran->second) failed.push_back(name);
+    }
+    const double lost = std::max(0.0, items.at(itemKey(item)).points - item.score);
+    for (const std::string& name : failed) checks[name].lost += lost / double(failed.size());
+  }
+}
+
 void flagChecks(ClassInsights& c) {
   if (c.graded < kFlagMinimum) return;
   for (const CheckStats& check : c.checks) {
@@ -342,6 +366,9 @@ ClassInsights summarize(std::vector<SubmissionResult> submissions) {
     }
   }
   finishItems(items, c);
+  for (const SubmissionResult& s : submissions) {
+    if (s.total) costChecks(s, items, checks);
+  }
   for (auto& [name, st] : checks) c.checks.push_back(st);
   for (auto& [id, m] : mistakes) c.mistakes.push_back(m);
   std::stable_sort(

@@ -23,10 +23,11 @@ struct ItemResult {
   std::string number;  ///< "4.3": the task, then the item's place in it
   int task = 0;        ///< from the "task<N>" tag; 0 when none
   bool extraCredit = false;
-  bool passed = false;        ///< every check of it passed
-  double score = 0, max = 0;  ///< max 0 for extra credit and for items without points
-  std::string mistake;        ///< the named mistake behind its failures (an id), or ""
-  std::string mistakeText;    ///< what the report told the student about it
+  bool passed = false;              ///< every check of it passed
+  double score = 0, max = 0;        ///< max 0 for extra credit and for items without points
+  std::string mistake;              ///< the named mistake behind its failures (an id), or ""
+  std::string mistakeText;          ///< what the report told the student about it
+  std::vector<std::string> checks;  ///< its checks (extra_data.checks; none in older results)
 };
 
 /// Counts of what went wrong while the code ran (results.json's extra_data.incidents).
@@ -79,6 +80,11 @@ struct CheckStats {
   std::string name;
   int task = 0;  ///< from "Task<N>" or "GoldenTask<N>" in its name; 0 when none
   int ran = 0, passed = 0;
+  /// Points the class lost on it: each grading's points lost on an item, shared evenly among
+  /// the item's checks it failed. Unknown (costed false) when no results.json named the item's
+  /// checks.
+  double lost = 0;
+  bool costed = false;
   double passRate() const { return ran == 0 ? 0 : double(passed) / ran; }
 };
 

@@ -199,9 +199,10 @@ void itemsTable(std::ostringstream& out, const ClassInsights& c) {
 void checksTable(std::ostringstream& out, const ClassInsights& c) {
   std::map<std::string, bool> flagged;
   for (const Flag& f : c.flags) flagged[f.check] = f.nearlyAllFail;
-  out << "<h2 id=\"checks\">Checks</h2>\n<p>Each check the gradings ran, with how many passed it."
-         "</p>\n<table class=\"sortable\"><thead><tr><th>check</th><th>task</th><th>passed</th>"
-         "<th>failed</th></tr></thead><tbody>\n";
+  out << "<h2 id=\"checks\">Checks</h2>\n<p>Each check the gradings ran, with how many passed it "
+         "and the points it cost the class (a grading's points lost on an item, shared among the "
+         "item's checks it failed).</p>\n<table class=\"sortable\"><thead><tr><th>check</th>"
+         "<th>task</th><th>passed</th><th>failed</th><th>points lost</th></tr></thead><tbody>\n";
   for (const CheckStats& check : c.checks) {
     const auto f = flagged.find(check.name);
     const bool look = f != flagged.end() && f->second;
@@ -209,7 +210,9 @@ void checksTable(std::ostringstream& out, const ClassInsights& c) {
         << "</code></td>" << numCell(check.task, 0)
         << barCell(check.passRate(),
                    std::to_string(check.passed) + " of " + std::to_string(check.ran))
-        << numCell(check.ran - check.passed, 0) << "</tr>\n";
+        << numCell(check.ran - check.passed, 0)
+        << (check.costed ? numCell(check.lost) : "<td class=\"num\" data-v=\"-1\">–</td>")
+        << "</tr>\n";
   }
   out << "</tbody></table>\n";
 }

@@ -252,9 +252,13 @@ Json itemJson(const GradeReport& report, const ScoredItem& s) {
   if (s.item.extraCredit) tags.push_back("extra_credit");
   if (s.item.allOrNothing) tags.push_back("all_or_nothing");
   t["tags"] = tags;
+  Json extra = {{"checks", Json::array()}};  // for a6_insights: what each check cost
+  for (const TestOutcome* test : s.tests) extra["checks"].push_back(test->name);
   if (const NamedMistake* m = mistakeOf(report, s)) {
-    t["extra_data"] = {{"mistake", m->id}, {"mistake_text", m->text}};
+    extra["mistake"] = m->id;
+    extra["mistake_text"] = m->text;
   }
+  t["extra_data"] = std::move(extra);
   return t;
 }
 

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include "insights/page.h"
@@ -83,6 +84,37 @@ TEST(Insights, TheClassNumbersCountEachSubmissionOnce) {
   EXPECT_EQ(c.mistakes[0].who, (std::vector<std::string>{"b", "c"}));
   EXPECT_EQ(c.mistakes[0].example, "Your spring <b>pulls</b> the wrong way");
   EXPECT_TRUE(c.flags.empty()) << "3 graded submissions are too few to judge a check";
+}
+
+// A grading of one item worth 12 that names its checks A and B, and which of them failed.
+std::string costedResults(double score, bool aPassed, bool bPassed) {
+  const auto status = [](bool passed) { return std::string(passed ? "passed" : "failed"); };
+  return R"J({"score": )J" + std::to_string(score) + R"J(, "tests": [
+    {"name": "Task 1: spring force", "number": "1.2", "score": )J" +
+         std::to_string(score) + R"J(, "max_score": 12, "status": ")J" +
+         status(aPassed && bPassed) +
+         R"J(", "tags": ["task1"], "extra_data": {"checks": ["Task1Spring.A", "Task1Spring.B"]}}],
+  "extra_data": {"tests": {"Task1Spring.A": ")J" +
+         status(aPassed) + R"J(", "Task1Spring.B": ")J" + status(bPassed) +
+         R"J(", "GoldenTask1.x": "passed"}}})J";
+}
+
+TEST(Insights, EachCheckCostsItsShareOfThePointsItsItemLost) {
+  std::vector<SubmissionResult> all;
+  all.push_back(readResults("a", costedResults(6, false, false)));  // 3 each
+  all.push_back(readResults("b", costedResults(9, false, true)));   // 3 on A
+  all.push_back(readResults("c", costedResults(12, true, true)));
+  all.push_back(readResults("d", results(6, false)));  // an older results.json: no checks named
+  const ClassInsights c = summarize(all);
+  std::map<std::string, CheckStats> by;
+  for (const CheckStats& check : c.checks) by[check.name] = check;
+  EXPECT_TRUE(by.at("Task1Spring.A").costed);
+  EXPECT_DOUBLE_EQ(by.at("Task1Spring.A").lost, 6);
+  EXPECT_DOUBLE_EQ(by.at("Task1Spring.B").lost, 3);
+  EXPECT_FALSE(by.at("GoldenTask1.x").costed) << "no item names it";
+  const std::string page = insightsHtml(c, PageInput{"A6", "out", {}, nullptr});
+  EXPECT_NE(page.find("<th>points lost</th></tr></thead>"), std::string::npos);
+  EXPECT_NE(page.find("data-v=\"-1\">–</td>"), std::string::npos) << "an unknown cost is no 0";
 }
 
 TEST(Insights, ChecksNearlyEveryoneFailsOrNobodyFailsAreFlagged) {

@@ -473,7 +473,7 @@ TEST(Mistake, LeadsEveryFailedItemOfItsTaskAndGoesInExtraData) {
       EXPECT_EQ(t["output"].get<std::string>().rfind("Your spring force behaves", 0), 0u)
           << t["output"];
     } else {
-      EXPECT_FALSE(t.contains("extra_data")) << t.dump(2);
+      EXPECT_FALSE(t["extra_data"].contains("mistake")) << t.dump(2);
     }
   }
   EXPECT_EQ(named, 1);
@@ -486,7 +486,19 @@ TEST(Mistake, LeadsEveryFailedItemOfItsTaskAndGoesInExtraData) {
 TEST(Mistake, NoneNamedLeavesTheOutputAsItWas) {
   const json r = json::parse(resultsJson(sampleReport()));
   EXPECT_EQ(r["extra_data"]["mistakes"], json::array());
-  for (const json& t : r["tests"]) EXPECT_FALSE(t.contains("extra_data"));
+  for (const json& t : r["tests"]) EXPECT_FALSE(t["extra_data"].contains("mistake")) << t.dump(2);
+}
+
+// Each item names its checks (for a6_insights: what each check cost the class).
+TEST(Results, EachItemNamesItsChecks) {
+  const GradeReport report = sampleReport();
+  const json r = json::parse(resultsJson(report));
+  ASSERT_EQ(r["tests"].size(), report.items.size());
+  for (std::size_t i = 0; i < report.items.size(); ++i) {
+    std::vector<std::string> names;
+    for (const TestOutcome* t : report.items[i].tests) names.push_back(t->name);
+    EXPECT_EQ(r["tests"][i]["extra_data"]["checks"], json(names)) << r["tests"][i].dump(2);
+  }
 }
 
 // Replays ----------------------------------------------------------------------------------------
