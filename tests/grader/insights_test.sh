@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # The class's picture as an instructor who grades on Gradescope gets it (ctest grader_insights):
 # a Gradescope "Export Submissions", unzipped, of a small class, with the results.json files the
-# suite's own gradings wrote (the solution, the starter, five correct alternatives, a wrong
-# cloth, and a copy of one alternative with every local name renamed), and one submission whose
-# results are missing. `a6_insights EXPORT --similarity` must
+# suite's own gradings wrote (the solution, the starter, four correct alternatives, a wrong
+# cloth, three wrong versions written from the handout, and a copy of one alternative with every
+# local name renamed), and one submission whose results are missing. `a6_insights EXPORT
+# --similarity` must
 #   - name every submission and every rubric item, count the graded ones and the missing one,
-#     and name the wrong cloth's mistake;
+#     name the wrong cloth's mistake, count each named mistake and who made it, and give a
+#     check's pass rate;
 #   - find the renamed copy (its pair, in every task file the copied student wrote), and no pair
 #     of the independent correct solutions (the solution, float_intermediates, reordered,
 #     handout_only); handout_only_2, nearly handout_only token for token, in at most one file;
 #   - give a page Chromium opens from disk with its script run and no console error; its
-#     screenshot is WORK/insights.png (docs/images/insights.png is one, by hand).
+#     screenshot is WORK/insights.png (docs/insights.png is one, by hand).
 #
 #   insights_test.sh SOURCE_DIR A6_INSIGHTS SCORES_OUT WORK
 # SCORES_OUT: the grader_scores_* and alternative_* gradings' folder (each NAME/out/results.json).
@@ -45,6 +47,12 @@ cloth=t4_shear_with_structural_rest_length
 add 106 "Gus Cloth" "$scores/wrong_$cloth/out/results.json" "$root"/solution/*.cpp
 cp "$root/tests/wrong/$cloth/cloth.cpp" "$export/submission_106/"
 add 107 "Ivy Missing" "" "$root"/solution/spring.cpp
+# Three wrong versions written from the handout (tests/wrong/b*, c*), each submitted as its one
+# task file: two forget to reset the forces, one leaves the mass out of gravity.
+for w in "110 Kim b3_force_not_reset" "111 Lou c3_force_not_reset" "112 Max b2_gravity_no_mass"; do
+  read -r id who wrong <<<"$w"
+  add "$id" "$who Wrong" "$scores/wrong_$wrong/out/results.json" "$root"/tests/wrong/"$wrong"/*.cpp
+done
 # The copy: Cai's files with every name Cai declared (variables, parameters) renamed.
 mkdir -p "$work/copy"
 for f in "$alt"/reordered/*.cpp; do
@@ -65,15 +73,29 @@ page="$work/insights.html"
 
 # Every submission, every rubric item, the counts, the mistake, the missing results.
 for name in "Ada Solution" "Ben Float" "Cai Reordered" "Dee Handout" "Eve Handout" "Fay Starter" \
-            "Gus Cloth" "Ivy Missing" "Hal Copy"; do
+            "Gus Cloth" "Ivy Missing" "Hal Copy" "Kim Wrong" "Lou Wrong" "Max Wrong"; do
   grep -qF "<td>$name</td>" "$page" || fail "the page does not list $name"
 done
 while IFS= read -r item; do
   grep -qF -- "$item" "$page" || fail "the page does not name the rubric item '$item'"
 done < <(jq -r '.tests[].name | sub(" \\([0-9]+/[0-9]+ checks?\\)$"; "")' "$scores/solution/out/results.json")
-grep -qF "9 submissions, 8 with a grade" "$page" || fail "the page does not count 9 submissions, 8 graded"
-grep -qF "1 of 9 exported submissions hold no results.json" "$page" || fail "the missing results are not said"
+grep -qF "12 submissions, 11 with a grade" "$page" || fail "the page does not count 12 submissions, 11 graded"
+grep -qF "1 of 12 exported submissions hold no results.json" "$page" || fail "the missing results are not said"
 grep -qF "<code>$cloth</code>" "$page" || fail "the wrong cloth's mistake is not named"
+# Each named mistake with how many made it and who: its row's cells are the id, the task, the
+# count, the example message and who.
+for want in "t3_forces_not_reset:3:2:Kim Wrong, Lou Wrong" "t2_gravity_without_mass:2:1:Max Wrong"; do
+  IFS=: read -r id task count who <<<"$want"
+  cells=$(grep -oP "<tr><td><code>$id</code></td>.*?</tr>" "$page" | head -1 |
+    sed -E 's|<td[^>]*>|\n|g; s|</td>||g; s|</?(tr\|code)>||g' | tail -n +2)
+  [ "$(sed -n 2p <<<"$cells")" = "$task" ] && [ "$(sed -n 3p <<<"$cells")" = "$count" ] &&
+    [ "$(sed -n 5p <<<"$cells")" = "$who" ] ||
+    fail "the mistake $id (task $task) is not named for $count: $who; its row: ${cells:-none}"
+done
+# A check's pass rate: free fall, failed by the two who forgot to reset the forces and
+# by the starter.
+reset_row=$(grep -oP '<tr[^>]*><td><code>Task3TimeStepping.FreeFallMatchesTheDiscreteSum</code></td>.*?</tr>' "$page")
+grep -qF '>8 of 11</td>' <<<"$reset_row" || fail "free fall is not passed by 8 of 11: $reset_row"
 
 # Similarity: the copy's pairs, and no other.
 pairs=$(grep -oP '<div class="pair"><p><b>\K[^<]*</b> and <b>[^<]*(?=</b>)' "$page" | sed 's|</b> and <b>| + |' | sort -u)
