@@ -402,7 +402,8 @@ TEST(Task7Implicit, TheUndampedOscillatorLosesEnergyByTheExactFactor) {
 }
 
 TEST(Task7Implicit, PinnedParticlesStay) {
-  // A chain of four under gravity, its first particle pinned (and moving: it keeps its v and x).
+  // A chain of four under gravity, its first particle pinned (and moving: it keeps its v and x),
+  // the others free: they must fall, so a step that moves nothing does not pass.
   SimulateRequest r = implicitRequest(
       {body(Vec2(0, 0), Vec2(0.5, 0), 1.0, true), body(Vec2(0.3, 0), Vec2::Zero(), 0.2),
        body(Vec2(0.6, 0), Vec2::Zero(), 0.2), body(Vec2(0.9, 0), Vec2::Zero(), 0.2)},
@@ -419,6 +420,13 @@ TEST(Task7Implicit, PinnedParticlesStay) {
                       "v after step " + std::to_string(k + 1) + "; " + input(r));
   }
   inputs.report(hint("a pinned particle never moves: skip it when you apply Δv and x += v h"));
+  // Free fall alone would take it 15 cm in the 10 steps (55 h² g); the chain holds it back.
+  const double moved = (result.states.back()[3].x - r.particles[3].x).norm();
+  EXPECT_GT(moved, 1e-2) << currentTask() << ": the free particle 3 moved " << num(moved)
+                         << " m in " << r.frames << " steps; " << input(r)
+                         << hint(
+                                "only pinned particles stay put: stepImplicit must apply Δv "
+                                "and x += v h to every other particle");
 }
 
 // --- Laws of the step on a free system -----------------------------------------------------------

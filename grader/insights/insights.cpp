@@ -95,8 +95,13 @@ ItemResult itemOf(const Json& t) {
   const Json& extra = objectAt(t, "extra_data");
   item.mistake = stringAt(extra, "mistake");
   item.mistakeText = stringAt(extra, "mistake_text");
+  if (const Json worth = extra.value("points", Json()); worth.is_number()) {
+    const double points = worth.get<double>();
+    if (std::isfinite(points) && points >= 0) item.worth = points;
+  }
   if (extra.contains("checks") && extra["checks"].is_array()) {
     for (const Json& check : extra["checks"]) {
+      if (item.checks.size() == kMostChecksOfAnItem) break;
       if (check.is_string()) item.checks.push_back(check.get<std::string>());
     }
   }
@@ -317,19 +322,21 @@ void finishItems(std::map<std::string, ItemStats>& items, ClassInsights& c) {
   });
 }
 
-// What each check cost: a grading's points lost on an item (what the item is worth, less its
-// score), shared evenly among the item's checks that the grading failed.
+// What each check cost: a grading's points lost on an item (what the item is worth, or the most
+// the class got where results.json does not say, less its score), shared evenly among the
+// item's checks that the grading ran and failed (each named once).
 void costChecks(const SubmissionResult& s, const std::map<std::string, ItemStats>& items,
                 std::map<std::string, CheckStats>& checks) {
   for (const ItemResult& item : s.items) {
-    std::vector<std::string> failed;
+    std::set<std::string> named, failed;
     for (const std::string& name : item.checks) {
       const auto ran = s.checks.find(name);
-      if (ran == s.checks.end()) continue;
-      checks[name].costed = true;
-      if (!ran->second) failed.push_back(name);
+      if (ran == s.checks.end() || !named.insert(name).second) continue;
+      ++checks[name].costedRuns;
+      if (!ran->second) failed.insert(name);
     }
-    const double lost = std::max(0.0, items.at(itemKey(item)).points - item.score);
+    const double worth = item.worth.value_or(items.at(itemKey(item)).points);
+    const double lost = std::max(0.0, worth - item.score);
     for (const std::string& name : failed) checks[name].lost += lost / double(failed.size());
   }
 }

@@ -25,9 +25,11 @@ struct ItemResult {
   bool extraCredit = false;
   bool passed = false;              ///< every check of it passed
   double score = 0, max = 0;        ///< max 0 for extra credit and for items without points
+  std::optional<double> worth;      ///< what the item is worth (extra_data.points), when given
   std::string mistake;              ///< the named mistake behind its failures (an id), or ""
   std::string mistakeText;          ///< what the report told the student about it
-  std::vector<std::string> checks;  ///< its checks (extra_data.checks; none in older results)
+  std::vector<std::string> checks;  ///< its checks (extra_data.checks; none in older results),
+                                    ///< at most kMostChecksOfAnItem
 };
 
 /// Counts of what went wrong while the code ran (results.json's extra_data.incidents).
@@ -80,11 +82,12 @@ struct CheckStats {
   std::string name;
   int task = 0;  ///< from "Task<N>" or "GoldenTask<N>" in its name; 0 when none
   int ran = 0, passed = 0;
-  /// Points the class lost on it: each grading's points lost on an item, shared evenly among
-  /// the item's checks it failed. Unknown (costed false) when no results.json named the item's
-  /// checks.
+  /// Points the class lost on it: each grading's points lost on an item (its worth less its
+  /// score), shared evenly among the item's checks it failed. Known (costed) only when every
+  /// grading that ran it named its item's checks (results.json written before did not).
   double lost = 0;
-  bool costed = false;
+  int costedRuns = 0;
+  bool costed() const { return ran > 0 && costedRuns == ran; }
   double passRate() const { return ran == 0 ? 0 : double(passed) / ran; }
 };
 
@@ -109,6 +112,9 @@ struct ClassInsights {
   std::vector<Flag> flags;
   int graded = 0;  ///< submissions with a grade
 };
+
+/// An item's list of checks longer than this is cut (a results.json is untrusted).
+inline constexpr std::size_t kMostChecksOfAnItem = 10000;
 
 /// Checks are flagged only in a class of at least this many graded submissions.
 inline constexpr int kFlagMinimum = 5;

@@ -211,7 +211,7 @@ void checksTable(std::ostringstream& out, const ClassInsights& c) {
         << barCell(check.passRate(),
                    std::to_string(check.passed) + " of " + std::to_string(check.ran))
         << numCell(check.ran - check.passed, 0)
-        << (check.costed ? numCell(check.lost) : "<td class=\"num\" data-v=\"-1\">–</td>")
+        << (check.costed() ? numCell(check.lost) : "<td class=\"num\" data-v=\"-1\">–</td>")
         << "</tr>\n";
   }
   out << "</tbody></table>\n";

@@ -252,7 +252,8 @@ Json itemJson(const GradeReport& report, const ScoredItem& s) {
   if (s.item.extraCredit) tags.push_back("extra_credit");
   if (s.item.allOrNothing) tags.push_back("all_or_nothing");
   t["tags"] = tags;
-  Json extra = {{"checks", Json::array()}};  // for a6_insights: what each check cost
+  // For a6_insights: what each check cost (the item's worth, extra credit too, and its checks).
+  Json extra = {{"points", s.item.points}, {"checks", Json::array()}};
   for (const TestOutcome* test : s.tests) extra["checks"].push_back(test->name);
   if (const NamedMistake* m = mistakeOf(report, s)) {
     extra["mistake"] = m->id;

@@ -93,10 +93,17 @@ std::string costedResults(double score, bool aPassed, bool bPassed) {
     {"name": "Task 1: spring force", "number": "1.2", "score": )J" +
          std::to_string(score) + R"J(, "max_score": 12, "status": ")J" +
          status(aPassed && bPassed) +
-         R"J(", "tags": ["task1"], "extra_data": {"checks": ["Task1Spring.A", "Task1Spring.B"]}}],
+         R"J(", "tags": ["task1"], "extra_data": {"points": 12,
+       "checks": ["Task1Spring.A", "Task1Spring.B", "Task1Spring.A", 7]}}],
   "extra_data": {"tests": {"Task1Spring.A": ")J" +
          status(aPassed) + R"J(", "Task1Spring.B": ")J" + status(bPassed) +
          R"J(", "GoldenTask1.x": "passed"}}})J";
+}
+
+// The row of `check` in the page's checks table.
+std::string checkRow(const std::string& page, const std::string& check) {
+  const std::size_t at = page.find("<td><code>" + check + "</code></td>");
+  return at == std::string::npos ? "" : page.substr(at, page.find("</tr>", at) - at);
 }
 
 TEST(Insights, EachCheckCostsItsShareOfThePointsItsItemLost) {
@@ -104,17 +111,26 @@ TEST(Insights, EachCheckCostsItsShareOfThePointsItsItemLost) {
   all.push_back(readResults("a", costedResults(6, false, false)));  // 3 each
   all.push_back(readResults("b", costedResults(9, false, true)));   // 3 on A
   all.push_back(readResults("c", costedResults(12, true, true)));
-  all.push_back(readResults("d", results(6, false)));  // an older results.json: no checks named
-  const ClassInsights c = summarize(all);
+  ClassInsights c = summarize(all);
   std::map<std::string, CheckStats> by;
   for (const CheckStats& check : c.checks) by[check.name] = check;
-  EXPECT_TRUE(by.at("Task1Spring.A").costed);
-  EXPECT_DOUBLE_EQ(by.at("Task1Spring.A").lost, 6);
+  EXPECT_TRUE(by.at("Task1Spring.A").costed());
+  EXPECT_DOUBLE_EQ(by.at("Task1Spring.A").lost, 6) << "A named twice is counted once";
   EXPECT_DOUBLE_EQ(by.at("Task1Spring.B").lost, 3);
-  EXPECT_FALSE(by.at("GoldenTask1.x").costed) << "no item names it";
-  const std::string page = insightsHtml(c, PageInput{"A6", "out", {}, nullptr});
-  EXPECT_NE(page.find("<th>points lost</th></tr></thead>"), std::string::npos);
-  EXPECT_NE(page.find("data-v=\"-1\">–</td>"), std::string::npos) << "an unknown cost is no 0";
+  EXPECT_FALSE(by.at("GoldenTask1.x").costed()) << "no item names it";
+  std::string page = insightsHtml(c, PageInput{"A6", "out", {}, nullptr});
+  EXPECT_NE(page.find("<th>failed</th><th>points lost</th>"), std::string::npos);
+  EXPECT_NE(checkRow(page, "Task1Spring.A").find("data-v=\"6\">6</td>"), std::string::npos)
+      << checkRow(page, "Task1Spring.A");
+  EXPECT_NE(checkRow(page, "GoldenTask1.x").find("data-v=\"-1\">–</td>"), std::string::npos)
+      << "an unknown cost is no 0: " << checkRow(page, "GoldenTask1.x");
+
+  // A results.json written before items named their checks: A's cost is unknown, not 6.
+  all.push_back(readResults("d", results(6, false)));
+  c = summarize(all);
+  page = insightsHtml(c, PageInput{"A6", "out", {}, nullptr});
+  EXPECT_NE(checkRow(page, "Task1Spring.A").find("data-v=\"-1\">–</td>"), std::string::npos)
+      << checkRow(page, "Task1Spring.A");
 }
 
 TEST(Insights, ChecksNearlyEveryoneFailsOrNobodyFailsAreFlagged) {

@@ -1,5 +1,5 @@
 // HOSTILE SUBMISSION (grader test fixture, tests/grader/hostile_test.cpp): an exception with a
-// message of 4 MiB.
+// message of nearly 4 MiB.
 //
 // computeForce throws, with a message that goes on for 4 MiB less 64 KiB of bytes that are not
 // UTF-8 (each becomes a 3-byte U+FFFD once made valid): with the words around it in a scene's
