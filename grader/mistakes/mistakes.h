@@ -37,8 +37,8 @@ struct MistakeModel {
   /// One likeness per request of the transcript that the model can answer.
   std::function<std::vector<Likeness>(const Transcript&)> judge;
   /// A combination of a function's parts, each in the physics' form or a wrong one (library/
-  /// parts.cpp): named only when it fits every answer where it differs from the physics and no
-  /// other such model of its task does; it then takes the place of a catalogue model's name.
+  /// parts.cpp, task2.cpp): named only when it fits every answer where it differs from the physics
+  /// and no other such model of its task does; it then takes the place of a catalogue model's name.
   bool partByPart = false;
 };
 

@@ -1,7 +1,12 @@
-// Task 2, the forces: the reference gravity m g, buoyancy b (T - T_air)(0,1), drag -k_d v,
-// repulsion k_r d n while inside and their sum over every obstacle, and the mistakes of
-// tests/wrong/t2_*, each answering ForcesRequest as that wrong version does.
-#include <optional>
+// Task 2, the forces, named part by part (as parts.cpp names the spring force's terms): gravity
+// m g, buoyancy b (T - T_air)(0, 1), drag -k_d v, repulsion k_r d n while inside, and
+// externalForce, their sum with the repulsion of every obstacle. Each part has the physics' form
+// and the wrong forms students write (tests/wrong/t2_*, b2_*, c2_*); every combination of one or
+// two wrong parts is a model, named only when it alone of task 2's fits every answer.
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
 
 #include "mistakes/library/compare.h"
 #include "mistakes/library/models.h"
@@ -12,42 +17,83 @@ namespace {
 using harness::ForcesRequest;
 using harness::ForcesResult;
 
-enum class Flaw {
-  None,
-  BuoyancyDown,
-  DragWrongSign,
-  ForgetsCircles,
-  GravityWithoutMass,
-  AlwaysRepel
+// One form of one part: its key (for the model's id), how it differs from the physics (for the
+// student's sentence) and its formula. The first form of each part is the physics'.
+struct Form {
+  const char* key;
+  const char* how;
+  const char* formula;
 };
 
-Vec2 repulsion(const Contact& c, double kr, Flaw flaw) {
-  if (c.depth <= 0 && flaw != Flaw::AlwaysRepel) return Vec2::Zero();
-  return kr * c.depth * c.normal;
+enum Part { kGravity, kBuoyancy, kDrag, kRepulsion, kSum, kParts };
+
+const char* const kPartNames[kParts] = {"gravity", "buoyancy", "drag", "repulsion",
+                                        "externalForce"};
+
+const std::vector<Form>& formsOf(int part) {
+  static const std::vector<Form> forms[kParts] = {
+      {{"", "", "m g"},
+       {"gravity_without_mass", "leaves out the mass", "g"},
+       {"gravity_sign", "has the wrong sign", "-m g"}},
+      {{"", "", "b (T - T_air)(0, 1)"},
+       {"buoyancy_downwards", "has the wrong sign", "b (T_air - T)(0, 1)"},
+       {"buoyancy_no_air", "leaves out the air's temperature", "b T (0, 1)"}},
+      {{"", "", "-k_d v"},
+       {"drag_wrong_sign", "has the wrong sign", "+k_d v"},
+       {"drag_quadratic", "grows with the square of the speed", "-k_d |v| v"}},
+      {{"", "", "k_r d n while d > 0, else 0"},
+       {"repulsion_always_on", "has no depth check (outside an obstacle it pulls the particle in)",
+        "k_r d n for every d"},
+       {"repulsion_sign", "has the wrong sign", "-k_r d n while d > 0"}},
+      {{"", "", "the sum of the forces and the repulsion of every half-plane and circle"},
+       {"external_forgets_circles", "forgets the circles",
+        "the sum with the half-planes' repulsion only"},
+       {"external_stops_at_first_obstacle", "stops at the first obstacle that pushes",
+        "the sum with that obstacle's repulsion only"},
+       {"external_repulsion_uses_kd", "hands repulsionForce the drag coefficient k_d, not k_r",
+        "the sum with every obstacle's k_d d n"}},
+  };
+  return forms[part];
 }
 
-Vec2 externalTotal(const ForcesRequest& r, const ForcesResult& parts, Flaw flaw) {
+// The form of each part a model takes (0: the physics').
+using Choice = std::array<std::size_t, kParts>;
+
+Vec2 repulsion(const Contact& c, double kr, std::size_t form) {
+  if (c.depth <= 0 && form != 1) return Vec2::Zero();
+  return (form == 2 ? -kr : kr) * c.depth * c.normal;
+}
+
+// externalForce's sum in its form: the three forces, then each obstacle's repulsion.
+Vec2 sum(const ForcesRequest& r, const ForcesResult& parts, const Choice& c) {
+  const double kr = c[kSum] == 3 ? r.env.drag : r.env.repulsion;
   Vec2 f = parts.gravity + parts.buoyancy + parts.drag;
-  for (const HalfPlane& plane : r.env.planes)
-    f += repulsion(contactWith(plane, r.particle.x), r.env.repulsion, flaw);
-  if (flaw == Flaw::ForgetsCircles) return f;
-  for (const CircleObstacle& circle : r.env.circles)
-    f += repulsion(contactWith(circle, r.particle.x), r.env.repulsion, flaw);
+  std::vector<Contact> contacts;
+  for (const HalfPlane& plane : r.env.planes) contacts.push_back(contactWith(plane, r.particle.x));
+  if (c[kSum] != 1) {
+    for (const CircleObstacle& circle : r.env.circles)
+      contacts.push_back(contactWith(circle, r.particle.x));
+  }
+  for (const Contact& contact : contacts) {
+    const Vec2 push = repulsion(contact, kr, c[kRepulsion]);
+    f += push;
+    if (c[kSum] == 2 && push != Vec2::Zero()) break;
+  }
   return f;
 }
 
-// The answer of the forces with `flaw` (never empty: every request can be answered).
-std::optional<ForcesResult> forces(const ForcesRequest& r, Flaw flaw) {
+ForcesResult forces(const ForcesRequest& r, const Choice& c) {
   const Particle& p = r.particle;
   const Environment& env = r.env;
   ForcesResult out;
-  out.gravity = flaw == Flaw::GravityWithoutMass ? env.gravity : Vec2(p.m * env.gravity);
-  const double warmer = flaw == Flaw::BuoyancyDown ? env.airTemperature - p.temperature
-                                                   : p.temperature - env.airTemperature;
+  out.gravity = (c[kGravity] == 1 ? 1.0 : p.m) * (c[kGravity] == 2 ? -1.0 : 1.0) * env.gravity;
+  const double warmer = c[kBuoyancy] == 1   ? env.airTemperature - p.temperature
+                        : c[kBuoyancy] == 2 ? p.temperature
+                                            : p.temperature - env.airTemperature;
   out.buoyancy = env.buoyancy * warmer * Vec2(0, 1);
-  out.drag = (flaw == Flaw::DragWrongSign ? env.drag : -env.drag) * p.v;
-  out.repulsion = repulsion(r.contact, env.repulsion, flaw);
-  out.total = externalTotal(r, out, flaw);
+  out.drag = (c[kDrag] == 1 ? env.drag : -env.drag) * (c[kDrag] == 2 ? p.v.norm() : 1.0) * p.v;
+  out.repulsion = repulsion(r.contact, env.repulsion, c[kRepulsion]);
+  out.total = sum(r, out, c);
   return out;
 }
 
@@ -56,28 +102,64 @@ bool same(const ForcesResult& a, const ForcesResult& b) {
          near(a.repulsion, b.repulsion) && near(a.total, b.total);
 }
 
+bool allZero(const ForcesResult& a) {
+  return a.gravity == Vec2::Zero() && a.buoyancy == Vec2::Zero() && a.drag == Vec2::Zero() &&
+         a.repulsion == Vec2::Zero() && a.total == Vec2::Zero();
+}
+
+// The id ("t2_drag_wrong_sign", "t2_gravity_sign_and_drag_quadratic") and the sentence of a
+// combination: "Your drag has the wrong sign: yours is +k_d v, the physics gives -k_d v (...)".
+MistakeModel describe(const Choice& c) {
+  std::string id = "t2", text;
+  for (int part = 0; part < kParts; ++part) {
+    if (c[part] == 0) continue;
+    const Form& yours = formsOf(part)[c[part]];
+    const bool first = text.empty();
+    id += std::string(first ? "_" : "_and_") + yours.key;
+    text += std::string(first ? "Your " : "; your ") + kPartNames[part] + " " + yours.how +
+            ": yours is " + yours.formula + ", the physics gives " + formsOf(part)[0].formula;
+  }
+  MistakeModel m{id, 2, text + " (the other parts are right).", nullptr};
+  m.partByPart = true;
+  return m;
+}
+
+MistakeModel model(const Choice& c) {
+  MistakeModel m = describe(c);
+  m.judge = [c](const Transcript& t) {
+    std::vector<Likeness> out;
+    const auto& exchanges = t.of<ForcesRequest>();
+    const bool stub = std::all_of(exchanges.begin(), exchanges.end(),
+                                  [](const auto& x) { return allZero(x.result); });
+    if (stub) return out;  // a stub's zeros are named nothing
+    for (const auto& x : exchanges) {
+      out.push_back(likeness(x.result, forces(x.request, Choice{}), forces(x.request, c), same));
+    }
+    return out;
+  };
+  return m;
+}
+
 }  // namespace
 
 std::vector<MistakeModel> task2Mistakes() {
-  const auto model = flawModels<ForcesRequest, Flaw>(2, forces, same);
-  return {
-      model("t2_gravity_without_mass", Flaw::GravityWithoutMass,
-            "Your gravity behaves exactly like g without the mass: every particle weighs as if "
-            "it had 1 kg; the force is m g."),
-      model("t2_buoyancy_downwards", Flaw::BuoyancyDown,
-            "Your buoyancy behaves exactly like b (T_air - T)(0, 1): hot particles sink and cold "
-            "ones rise; the force is b (T - T_air)(0, 1)."),
-      model("t2_drag_wrong_sign", Flaw::DragWrongSign,
-            "Your drag behaves exactly like +k_d v: it speeds the particle up; drag opposes the "
-            "velocity, -k_d v."),
-      model("t2_repulsion_always_on", Flaw::AlwaysRepel,
-            "Your repulsion behaves exactly like k_r d n with no depth check: outside an obstacle "
-            "the depth is negative and the force pulls the particle in; return zero unless d > 0."),
-      model("t2_external_forgets_circles", Flaw::ForgetsCircles,
-            "Your externalForce behaves exactly like one that adds the half-planes' repulsion but "
-            "forgets the circles: add repulsionForce(contactWith(circle, p.x), k_r) for every "
-            "circle too."),
-  };
+  std::vector<MistakeModel> models;
+  // One wrong part, then every pair of wrong parts, in the parts' order.
+  for (int a = 0; a < kParts; ++a) {
+    for (std::size_t i = 1; i < formsOf(a).size(); ++i) {
+      Choice c{};
+      c[a] = i;
+      models.push_back(model(c));
+      for (int b = a + 1; b < kParts; ++b) {
+        for (std::size_t j = 1; j < formsOf(b).size(); ++j) {
+          Choice both = c;
+          both[b] = j;
+          models.push_back(model(both));
+        }
+      }
+    }
+  }
+  return models;
 }
 
 }  // namespace a6::grader::mistakes
