@@ -305,6 +305,14 @@ check_facts() {
   fact docs/instructor.md "gives %s points and %s of extra credit" "$TOTAL" "$EXTRA"
   fact docs/instructor.md "a perfect submission with the default rubric gets %s on Gradescope" "$FULL"
   fact docs/instructor.md "In the default rubric its %s checks" "$task7"
+  # "Adapting the assignment": task 7's extra credit, and the jobs its commands name.
+  fact docs/instructor.md "spring Jacobians\"\`: the name is what students see) and add %s to" \
+    "$(awk -F'\t' '$1 ~ /^Task 7 extra credit: / && $4 == "extra" { s += $2 } END { print s + 0 }' <<<"$ITEMS")"
+  local job
+  for job in $(grep -oE 'scripts/instructor\.sh [a-z-]+' docs/instructor.md | awk '{ print $2 }' | sort -u); do
+    grep -qE "^  $job\) " scripts/instructor.sh ||
+      fail "docs/instructor.md runs 'scripts/instructor.sh $job', which is no job of it"
+  done
   fact docs/instructor.md "on the starter (0 / %s," "$PUBLIC_TOTAL"
   fact docs/instructor.md "on the solution (%s / %s + %s extra credit)" "$PUBLIC_TOTAL" "$PUBLIC_TOTAL" "$PUBLIC_EXTRA"
   fact docs/instructor.md "Give it %s points (the rubric's \`total\`" "$TOTAL"

@@ -149,6 +149,20 @@ TEST(NameMistakes, AnswersThatFitTwoExplanationsNameNothing) {
   EXPECT_EQ(named(t, {1}), std::set<std::string>{});
 }
 
+TEST(NameMistakes, AMistakeTheModelDoesNotHaveNamesNothing) {
+  // Damping with the wrong sign, as above; then the spring with its ends at rest, where that
+  // model answers as the reference (-5), answered -7: some other mistake is there, and the
+  // sentence would say "its elastic term is right". Nothing is named.
+  Transcript t;
+  add(t, stretched(Vec2(-4, 0)));
+  add(t, moving(Vec2(-3, 0)));
+  EXPECT_EQ(named(t, {1}), std::set<std::string>{"t1_damping_sign"});
+  SpringExchange still = stretched(Vec2(-7, 0));
+  still.request.p1.v = still.request.p2.v = Vec2(0, 0);
+  add(t, still);
+  EXPECT_EQ(named(t, {1}), std::set<std::string>{});
+}
+
 TEST(NameMistakes, AJacobianBlockIsNamedByItsPart) {
   // The spring along x, stretched to 1.5 m (l0 1, ks 10, kd 2): dfdx = -10 diag(1, 1/3), dfdv =
   // -2 diag(1, 0). dfdv with the outer product left out: -2 I; dfdx right.

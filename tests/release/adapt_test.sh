@@ -126,15 +126,21 @@ step_passed "$before" "refusals: a rubric that does not add up stops at once, wi
 
 # 2. Points and extra credit ---------------------------------------------------------------------
 total=$(total)
+# What the adaptation adds to the total, from the rubric as it stands: the cloth raised to 20,
+# and task 7's extra credit made regular (the guide's "add N to `total`").
+listed=$(build/grader/a6_grade --list-items 2>/dev/null)
+raise=$(awk -F'\t' '$1 == "Task 4: cloth" { r += 20 - $2 }
+  $1 ~ /^Task 7 extra credit: / && $4 == "extra" { r += $2 } END { print r + 0 }' <<<"$listed")
+[[ "$raise" =~ ^[0-9]+$ ]] || fail "the rise of the total is '$raise', no whole number"
 set_in_item "Task 4: cloth" points 20
 for item in "spring Jacobians" "the implicit step"; do
   set_in_item "Task 7 extra credit: $item" extra_credit ""
   rename_item "Task 7 extra credit: $item" "Task 7: $item"
 done
-set_total $((total + 8 + 10))
+set_total $((total + raise))
 before=$failures
 if job rubric rubric; then
-  says rubric "$((total + 18)).00 / $((total + 18)).00"
+  says rubric "$((total + raise)).00 / $((total + raise)).00"
   says rubric "the starter scores 0"
   says rubric "the docs' examples and counts are true"
   for file in README.md docs/handout.md docs/instructor.md; do lists rubric "$file"; done
@@ -173,7 +179,7 @@ NAME="Task 2: hidden checks (random particles and environments)" perl -0pi -e '
   s{(\[\[item\]\]\nname = "\Q$ENV{NAME}\E")}
    {[[item]]\nname = "Task 2: hidden drag check"\ntask = 2\ntests = "Task2Hidden.DragOpposesRandomVelocities"\npoints = 2\nvisibility = "after_due_date"\n\n$1} or die' \
   grader/rubric.toml
-set_total $((total + 20))
+set_total $((total + raise + 2))
 perl -pi -e 'print "| Task 2: hidden drag check | 2 | 1 | drag alone on random velocities |\n"
   if /^\| Task 2: hidden checks \(random particles/' docs/instructor.md
 before=$failures

@@ -49,11 +49,14 @@ inline bool sameRun(const harness::SimulateResult& a, const harness::SimulateRes
 }
 
 /// The likeness of one answer: the mistake's and the reference's answers decide whether the
-/// request tells anything, then the student's is set beside each.
+/// request tells anything, then the student's is set beside each. Where the mistake answers as
+/// the reference does, a student who answers otherwise made some other mistake: like neither.
 template <class Result, class Same>
 Likeness likeness(const Result& student, const Result& reference, const Result& mistaken,
                   Same same) {
-  if (same(reference, mistaken)) return Likeness::Uninformative;
+  if (same(reference, mistaken)) {
+    return same(student, reference) ? Likeness::Uninformative : Likeness::Neither;
+  }
   if (same(student, mistaken)) return Likeness::Mistake;
   if (same(student, reference)) return Likeness::Reference;
   return Likeness::Neither;

@@ -42,56 +42,69 @@ const std::vector<Form>& formsOf(int part) {
        {"drag_wrong_sign", "has the wrong sign", "+k_d v"},
        {"drag_quadratic", "grows with the square of the speed", "-k_d |v| v"}},
       {{"", "", "k_r d n while d > 0, else 0"},
-       {"repulsion_always_on", "has no depth check (outside an obstacle it pulls the particle in)",
+       {"repulsion_always_on", "has no depth check: outside an obstacle it pulls the particle in",
         "k_r d n for every d"},
        {"repulsion_sign", "has the wrong sign", "-k_r d n while d > 0"}},
-      {{"", "", "the sum of the forces and the repulsion of every half-plane and circle"},
+      {{"", "", "the forces plus every obstacle's k_r d n"},
        {"external_forgets_circles", "forgets the circles",
-        "the sum with the half-planes' repulsion only"},
+        "the forces plus the half-planes' k_r d n only"},
        {"external_stops_at_first_obstacle", "stops at the first obstacle that pushes",
-        "the sum with that obstacle's repulsion only"},
+        "the forces plus the first pushing obstacle's k_r d n"},
        {"external_repulsion_uses_kd", "hands repulsionForce the drag coefficient k_d, not k_r",
-        "the sum with every obstacle's k_d d n"}},
+        "the forces plus every obstacle's k_d d n"}},
   };
   return forms[part];
 }
 
-// The form of each part a model takes (0: the physics').
+// The forms of each part, in the order of formsOf's lists (the physics' first).
+enum Gravity : std::size_t { kMassTimesG, kGravityNoMass, kGravitySign };
+enum Buoyancy : std::size_t { kWarmerRises, kBuoyancySign, kBuoyancyNoAir };
+enum Drag : std::size_t { kLinearDrag, kDragSign, kDragQuadratic };
+enum Repulsion : std::size_t { kWhileInside, kRepulsionAlwaysOn, kRepulsionSign };
+enum Sum : std::size_t { kEveryObstacle, kSumNoCircles, kSumFirstObstacle, kSumWithDrag };
+
+// The form of each part a model takes.
 using Choice = std::array<std::size_t, kParts>;
 
 Vec2 repulsion(const Contact& c, double kr, std::size_t form) {
-  if (c.depth <= 0 && form != 1) return Vec2::Zero();
-  return (form == 2 ? -kr : kr) * c.depth * c.normal;
+  if (c.depth <= 0 && form != kRepulsionAlwaysOn) return Vec2::Zero();
+  return (form == kRepulsionSign ? -kr : kr) * c.depth * c.normal;
 }
 
-// externalForce's sum in its form: the three forces, then each obstacle's repulsion.
+// externalForce's sum in its form: the three forces, then each obstacle's repulsion (the
+// half-planes first, as the handout's loop takes them).
 Vec2 sum(const ForcesRequest& r, const ForcesResult& parts, const Choice& c) {
-  const double kr = c[kSum] == 3 ? r.env.drag : r.env.repulsion;
+  const double kr = c[kSum] == kSumWithDrag ? r.env.drag : r.env.repulsion;
   Vec2 f = parts.gravity + parts.buoyancy + parts.drag;
   std::vector<Contact> contacts;
   for (const HalfPlane& plane : r.env.planes) contacts.push_back(contactWith(plane, r.particle.x));
-  if (c[kSum] != 1) {
+  if (c[kSum] != kSumNoCircles) {
     for (const CircleObstacle& circle : r.env.circles)
       contacts.push_back(contactWith(circle, r.particle.x));
   }
   for (const Contact& contact : contacts) {
     const Vec2 push = repulsion(contact, kr, c[kRepulsion]);
     f += push;
-    if (c[kSum] == 2 && push != Vec2::Zero()) break;
+    if (c[kSum] == kSumFirstObstacle && push != Vec2::Zero()) break;
   }
   return f;
+}
+
+double buoyancyWarmth(const Particle& p, const Environment& env, std::size_t form) {
+  if (form == kBuoyancySign) return env.airTemperature - p.temperature;
+  if (form == kBuoyancyNoAir) return p.temperature;
+  return p.temperature - env.airTemperature;
 }
 
 ForcesResult forces(const ForcesRequest& r, const Choice& c) {
   const Particle& p = r.particle;
   const Environment& env = r.env;
   ForcesResult out;
-  out.gravity = (c[kGravity] == 1 ? 1.0 : p.m) * (c[kGravity] == 2 ? -1.0 : 1.0) * env.gravity;
-  const double warmer = c[kBuoyancy] == 1   ? env.airTemperature - p.temperature
-                        : c[kBuoyancy] == 2 ? p.temperature
-                                            : p.temperature - env.airTemperature;
-  out.buoyancy = env.buoyancy * warmer * Vec2(0, 1);
-  out.drag = (c[kDrag] == 1 ? env.drag : -env.drag) * (c[kDrag] == 2 ? p.v.norm() : 1.0) * p.v;
+  const double mass = c[kGravity] == kGravityNoMass ? 1.0 : p.m;
+  out.gravity = (c[kGravity] == kGravitySign ? -mass : mass) * env.gravity;
+  out.buoyancy = env.buoyancy * buoyancyWarmth(p, env, c[kBuoyancy]) * Vec2(0, 1);
+  const double kd = c[kDrag] == kDragSign ? -env.drag : env.drag;
+  out.drag = -kd * (c[kDrag] == kDragQuadratic ? p.v.norm() : 1.0) * p.v;
   out.repulsion = repulsion(r.contact, env.repulsion, c[kRepulsion]);
   out.total = sum(r, out, c);
   return out;
