@@ -91,6 +91,17 @@ auto flawModels(int task, Answer answer, Same same) {
   };
 }
 
+/// Whether every answer to the requests of kind R is zero (`zero` says so of one): a stub's,
+/// which is named nothing (however its zeros happen to fit a wrong form on the inputs the checks
+/// used).
+template <class R, class Zero>
+bool allZero(const Transcript& t, Zero zero) {
+  for (const auto& x : t.of<R>()) {
+    if (!zero(x.result)) return false;
+  }
+  return true;
+}
+
 /// A likeness from what the student's answer shows directly (for mistakes recognised by a
 /// property of the answer: a joint's limit left off, a pointer left set).
 inline Likeness shows(bool likeMistake, bool likeReference) {

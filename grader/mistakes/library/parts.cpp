@@ -201,16 +201,6 @@ MistakeModel describe(int task, const std::string& whose, const char* first,
   return m;
 }
 
-// Whether every answer to the requests of kind R is zero: a stub's, which is named nothing
-// (however its zeros happen to fit a wrong form on the inputs the checks used).
-template <class R, class Zero>
-bool allZero(const Transcript& t, Zero zero) {
-  for (const auto& x : t.of<R>()) {
-    if (!zero(x.result)) return false;
-  }
-  return true;
-}
-
 // Task 1's model of elastic form i and damping form j, judged on every force request.
 MistakeModel forceModel(std::size_t i, std::size_t j) {
   MistakeModel m = describe(1, "spring force's", "elastic term", elasticForms(), i, "damping term",

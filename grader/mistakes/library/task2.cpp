@@ -3,7 +3,6 @@
 // externalForce, their sum with the repulsion of every obstacle. Each part has the physics' form
 // and the wrong forms students write (tests/wrong/t2_*, b2_*, c2_*); every combination of one or
 // two wrong parts is a model, named only when it alone of task 2's fits every answer.
-#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -115,7 +114,7 @@ bool same(const ForcesResult& a, const ForcesResult& b) {
          near(a.repulsion, b.repulsion) && near(a.total, b.total);
 }
 
-bool allZero(const ForcesResult& a) {
+bool isZero(const ForcesResult& a) {
   return a.gravity == Vec2::Zero() && a.buoyancy == Vec2::Zero() && a.drag == Vec2::Zero() &&
          a.repulsion == Vec2::Zero() && a.total == Vec2::Zero();
 }
@@ -141,11 +140,8 @@ MistakeModel model(const Choice& c) {
   MistakeModel m = describe(c);
   m.judge = [c](const Transcript& t) {
     std::vector<Likeness> out;
-    const auto& exchanges = t.of<ForcesRequest>();
-    const bool stub = std::all_of(exchanges.begin(), exchanges.end(),
-                                  [](const auto& x) { return allZero(x.result); });
-    if (stub) return out;  // a stub's zeros are named nothing
-    for (const auto& x : exchanges) {
+    if (allZero<ForcesRequest>(t, isZero)) return out;
+    for (const auto& x : t.of<ForcesRequest>()) {
       out.push_back(likeness(x.result, forces(x.request, Choice{}), forces(x.request, c), same));
     }
     return out;
