@@ -337,12 +337,77 @@ check_costs() {
   fact README.md "%s s for .ci/run" "$ci"
   fact README.md "%s s for scripts/test.sh" "$all"
   fact README.md "%s s for the tests" "$suite"
+  fact README.md "its tests' own seconds add up to %s s" "$(ctest --test-dir "$build" -N -L quick |
+    sed -n 's/^ *Test *#[0-9]*: //p' | awk 'NR == FNR { quick[$1] = 1; next }
+      /^\| `/ { name = $2; gsub(/`/, "", name); if (name in quick) s += $4 } END { printf "%.0f", s }' \
+      - docs/test-costs.md)"
   listed=$(sed -n 's/^| `\([^`]*\)` | [0-9.]* | [a-z]* |$/\1/p' docs/test-costs.md | sort)
   if [ "$listed" = "$(ctest --test-dir "$build" -N | sed -n 's/^ *Test *#[0-9]*: //p' | sort)" ]; then
     echo "ok: docs/test-costs.md has a row for each ctest entry"
   else
     fail "docs/test-costs.md does not list the ctest entries of this build (run .ci/run on a clean clone and scripts/test-costs.sh on its log)"
   fi
+}
+
+# The student's first hour (scripts/bench-first-hour.sh --write: the release as a user of its own,
+# an empty compiler cache): the times README.md, the release's README and the handout quote.
+check_first_hour() {
+  local results=tests/bench/results/first-hour.json first second loop runs cores notes
+  [ -f "$results" ] || { fail "no $results (scripts/bench-first-hour.sh --write makes it)"; return; }
+  IFS=$'\t' read -r first second loop runs cores notes < <(jq -r \
+    '[.first_check_s, .second_check_s, .loop_s, .loop_runs, .cores, .sandbox_lines] | @tsv' "$results")
+  fact grader/release/README.md "builds the grader (%s s on a %s-core machine); later ones take %s s" \
+    "$first" "$cores" "$second"
+  fact grader/release/README.md "checks (%s s on a %s-core machine)" "$loop" "$cores"
+  fact docs/handout.md "task 1's tests, %s s on a %s-core machine" "$loop" "$cores"
+  fact README.md "| %s s the first time (an empty compiler cache), %s s the next |" "$first" "$second"
+  fact README.md "| %s s (the median of %s runs) |" "$loop" "$runs"
+  fact README.md "What each command costs on the %s-core development machine" "$cores"
+  # "one note says it ran without the grader's sandbox": what the first check printed.
+  if [ "$notes" != 1 ] && grep -qF "one note says it ran without" grader/release/README.md; then
+    fail "grader/release/README.md says one note about the sandbox; the bench's check.sh printed $notes"
+  fi
+}
+
+# Counts and commands the READMEs and the handout state, against the code and the build: the
+# test output's limits, the packages, the port of the desktop, a pattern said to match no test,
+# and the release's commands where README.md says they are its own.
+check_stated() {
+  local file stated packages limit brief
+  limit=$(sed -n 's/^set(A6_TEST_OUTPUT_LIMIT \([0-9]*\))$/\1/p' tests/CMakeLists.txt)
+  brief=$(sed -n 's/.*kMaxLines = \([0-9]*\);.*/\1/p' tests/support/brief_failures.h)
+  fact README.md "A failing test prints at most %s lines" "$limit"
+  fact docs/handout.md "No test prints more than %s" "$limit"
+  fact docs/handout.md "first message (%s lines at most)" "$brief"
+  packages=$(bash scripts/install-deps.sh | sed -n 's/.*all \([0-9]*\) packages.*/\1/p')
+  for file in README.md grader/release/README.md docs/handout.md; do
+    for stated in $(grep -oE '\b[0-9]+ (Debian )?packages\b' "$file" | awk '{ print $1 }' | sort -u); do
+      [ "$stated" = "$packages" ] || fail "$file says $stated packages; install-deps names $packages"
+    done
+    for stated in $(grep -oE '\bport [0-9]+|:[0-9]{4}/vnc|forwarded port [0-9]+' "$file" | grep -oE '[0-9]+' | sort -u); do
+      grep -q "A6_DESKTOP_PORT:-$stated}" scripts/desktop.sh ||
+        fail "$file names the port $stated; scripts/desktop.sh serves another"
+    done
+    for stated in $(grep -oE -- '-R Task[0-9]+`: there is no task' "$file" | grep -oE 'Task[0-9]+' | sort -u); do
+      [ "$(ctest --test-dir "$build" -N -R "$stated" | sed -n 's/^Total Tests: //p')" = 0 ] ||
+        fail "$file says -R $stated matches no test; it matches some"
+    done
+  done
+  if grep -qi 'same two commands' README.md &&
+    ! cmp -s <(sed -n '/^```sh/,/^```/p' README.md | sed -n 2,3p | awk '{ print $1, $2, $3 }') \
+      <(sed -n '/^```sh/,/^```/p' grader/release/README.md | sed -n 2,3p | awk '{ print $1, $2, $3 }'); then
+    fail "README.md says the release's README has the same two commands; they differ"
+  fi
+  # A section of the README a script or the build names ('README.md, "Platforms"'): both READMEs
+  # have it, since the release ships those scripts with its own README.
+  for stated in $(git ls-files -- scripts CMakeLists.txt cmake grader/release |
+    xargs grep -ohE 'README\.md, \\?"[A-Za-z ]+\\?"' | grep -oE '"[A-Za-z ]+\\?"' | tr -d '"\\' | tr ' ' '_' | sort -u); do
+    for file in README.md grader/release/README.md; do
+      grep -qE "^#+ ${stated//_/ }\$" "$file" ||
+        fail "$file has no section \"${stated//_/ }\", which the scripts name"
+    done
+  done
+  echo "ok: the stated limits, packages, ports, patterns, sections and commands are the code's"
 }
 
 # The handout's table of reference images: each row's text is its manifest entry's "shows".
@@ -401,5 +466,7 @@ check_design_folders() {
 check_design_folders
 check_facts
 check_handout_images
+check_first_hour
+check_stated
 [ "$failures" -eq 0 ] || { echo "docs-examples: $failures problems" >&2; exit 1; }
 echo "docs-examples: all true"

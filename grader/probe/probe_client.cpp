@@ -19,9 +19,7 @@
 #include <stdexcept>
 #include <system_error>
 #include <thread>
-#include <type_traits>
 #include <utility>
-#include <variant>
 
 #include "harness/force_channel.h"
 #include "harness/wire.h"
@@ -693,13 +691,9 @@ void ProbeClient::stop() {
 }
 
 std::string reworded(std::string words) {
-  static const bool on = [] {
-    const char* v = std::getenv("A6_REWORD_MESSAGES");
-    return v != nullptr && std::string(v) == "1";
-  }();
+  static const char* const setting = std::getenv("A6_REWORD_MESSAGES");
+  static const bool on = setting != nullptr && std::string(setting) == "1";
   return on ? "[reworded] " + words : words;
 }
-
-SandboxView probeView(const std::vector<fs::path>& secrets) { return allowOnly({}, secrets); }
 
 }  // namespace a6::grader

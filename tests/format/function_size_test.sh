@@ -4,7 +4,7 @@
 # and blank lines included: a function a newcomer reads at once (docs/architecture.md). A lambda
 # counts as a function of its own, and inside the function that holds it. Measured by Universal
 # Ctags (Debian's universal-ctags), which gives each definition's first and last line without
-# compiling anything.
+# compiling anything. No file in grader/ is longer than 700 lines.
 #
 #   tests/format/function_size_test.sh SOURCE_DIR WORK_DIR [MAX_LINES]
 # WORK_DIR takes the canary file below. Exit code: 0 none too long, 1 some are (each named with
@@ -101,6 +101,14 @@ long=$(too_long "${files[@]}")
 if [ -n "$long" ]; then
   printf '%s\n' "$long"
   echo "FAIL: $(printf '%s\n' "$long" | wc -l) functions in grader/ and framework/harness/ are longer than $max lines; split them into named steps"
+  exit 1
+fi
+# And no file of grader/ over 700 lines (a file holds one concern: grader/DESIGN.md).
+big=$(git ls-files -z -- 'grader/*.cpp' 'grader/*.h' 'grader/*.cmake' | xargs -0 wc -l |
+  awk '$2 != "total" && $1 > 700 { print $2 " is " $1 " lines" }')
+if [ -n "$big" ]; then
+  printf '%s\n' "$big"
+  echo "FAIL: files in grader/ over 700 lines; split them by concern"
   exit 1
 fi
 echo "no function over $max lines in ${#files[@]} files of grader/ and framework/harness/ ($(ctags --version | head -1 | cut -d, -f1))"
