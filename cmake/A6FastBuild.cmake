@@ -106,3 +106,44 @@ const char ${name}[] = \"${path}\";
 ")
   target_sources(${target} PRIVATE ${file})
 endfunction()
+
+# a6_bundled(<target> <count> <file>...): compiles the given .cpp files of <target> <count> to a
+# translation unit (a bundle, generated in the build folder, that includes them), so that the
+# headers they share (GoogleTest, Eigen, nlohmann-json: about 3 s of every file) are read once
+# per bundle: most of what a student's first scripts/check.sh compiles is the suite and the
+# grading, and that build takes a quarter less time (scripts/bench-first-hour.sh). CMake's own
+# UNITY_BUILD includes each file by its absolute path, so that no two copies of the checkout
+# could share a bundle through ccache; these include them by a path relative to the bundle. A
+# file's names must not meet another's in its bundle: no name in an anonymous namespace, macro
+# or `using` at namespace scope is shared by two files of a bundle (tests/format/bundles_test.sh,
+# on the list of bundles this writes to a6_bundles.txt in the build folder).
+function(a6_bundled target count)
+  get_target_property(source_dir ${target} SOURCE_DIR)
+  set(dir ${CMAKE_CURRENT_BINARY_DIR}/a6_bundles)
+  get_property(k TARGET ${target} PROPERTY A6_BUNDLES_MADE)  # the bundles of earlier calls
+  if(NOT k)
+    set(k 0)
+  endif()
+  set(n 0)
+  set(content "")
+  list(LENGTH ARGN all)
+  foreach(file IN LISTS ARGN)
+    get_filename_component(path ${file} ABSOLUTE BASE_DIR ${source_dir})
+    set_source_files_properties(${file} PROPERTIES HEADER_FILE_ONLY ON)
+    file(RELATIVE_PATH relative ${dir} ${path})
+    string(APPEND content "#include \"${relative}\"\n")
+    math(EXPR n "${n} + 1")
+    math(EXPR done "${k} * ${count} + ${n}")
+    if(n EQUAL count OR done EQUAL all)
+      set(bundle ${dir}/${target}_${k}.cpp)
+      file(GENERATE OUTPUT ${bundle} CONTENT
+           "// Generated (cmake/A6FastBuild.cmake, a6_bundled): files of ${target}, compiled as one.\n${content}")
+      target_sources(${target} PRIVATE ${bundle})
+      set_property(GLOBAL APPEND PROPERTY A6_BUNDLES ${bundle})
+      math(EXPR k "${k} + 1")
+      set(n 0)
+      set(content "")
+    endif()
+  endforeach()
+  set_property(TARGET ${target} PROPERTY A6_BUNDLES_MADE ${k})
+endfunction()

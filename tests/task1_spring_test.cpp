@@ -6,7 +6,7 @@
 #include "suite.h"
 
 namespace a6::test {
-namespace {
+namespace task1_spring {
 
 // A spring from p1 at x1 to p2 at x2, both with the given velocities.
 harness::SpringForceRequest spring(Vec2 x1, Vec2 x2, double l0, double ks, double kd,
@@ -200,5 +200,5 @@ TEST(Task1Spring, DoesNotChangeTheParticles) {
       << hint("the same spring must give the same force every time: keep no state between calls");
 }
 
-}  // namespace
+}  // namespace task1_spring
 }  // namespace a6::test

@@ -8,7 +8,7 @@
 #include "suite.h"
 
 namespace a6::test {
-namespace {
+namespace task2_forces {
 
 // A particle at x with velocity v, mass m and temperature T.
 Particle particle(Vec2 x, Vec2 v = Vec2::Zero(), double m = 1.0, double T = 293.15) {
@@ -346,5 +346,5 @@ TEST(Task2Forces, ObstaclesOutsideAddNothing) {
                    "check the depth before adding k_r d n");
 }
 
-}  // namespace
+}  // namespace task2_forces
 }  // namespace a6::test

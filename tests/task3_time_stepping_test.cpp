@@ -13,7 +13,7 @@
 #include "suite.h"
 
 namespace a6::test {
-namespace {
+namespace task3_time_stepping {
 
 using harness::SimulateRequest;
 using harness::SimulateResult;
@@ -682,5 +682,5 @@ TEST(Task3TimeStepping, StiffChainExplodesWithOneSubstepAndHoldsWithTen) {
   }
 }
 
-}  // namespace
+}  // namespace task3_time_stepping
 }  // namespace a6::test

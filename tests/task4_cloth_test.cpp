@@ -14,7 +14,7 @@
 #include "suite.h"
 
 namespace a6::test {
-namespace {
+namespace task4_cloth {
 
 using Pair = std::pair<int, int>;  // particle indices, smaller first
 using PairSet = std::set<Pair>;
@@ -453,5 +453,5 @@ TEST(Task4Cloth, NothingIsPinnedWhenPinTopCornersIsFalse) {
   }
 }
 
-}  // namespace
+}  // namespace task4_cloth
 }  // namespace a6::test

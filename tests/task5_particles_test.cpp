@@ -19,7 +19,7 @@
 #include "suite.h"
 
 namespace a6::test {
-namespace {
+namespace task5_particles {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kDt = 1.0 / 64;  // exact in binary: ages add up without round-off
@@ -627,5 +627,5 @@ TEST(Task5Particles, AFloorStopsAFallingParticle) {
                                  "repulsion k_r d n");
 }
 
-}  // namespace
+}  // namespace task5_particles
 }  // namespace a6::test

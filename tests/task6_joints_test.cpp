@@ -15,7 +15,7 @@
 #include "suite.h"
 
 namespace a6::test {
-namespace {
+namespace task6_joints {
 
 using harness::Box2DRequest;
 using harness::Box2DResult;
@@ -723,5 +723,5 @@ TEST(Task6Joints, MouseJointIsDestroyedWhenTheDragEnds) {
                                   << hint("once the drag ends nothing may hold the box");
 }
 
-}  // namespace
+}  // namespace task6_joints
 }  // namespace a6::test

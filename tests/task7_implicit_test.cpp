@@ -13,7 +13,7 @@
 #include "suite.h"
 
 namespace a6::test {
-namespace {
+namespace task7_implicit {
 
 using harness::JacobiansResult;
 using harness::SimulateRequest;
@@ -681,5 +681,5 @@ TEST(Task7Implicit, TinyStepsAgreeWithSymplecticEulerToFirstOrder) {
   }
 }
 
-}  // namespace
+}  // namespace task7_implicit
 }  // namespace a6::test

@@ -26,7 +26,7 @@
 #include "suite.h"
 
 namespace a6::test {
-namespace {
+namespace hidden {
 
 #include "reference_models.inc"
 
@@ -344,5 +344,5 @@ TEST(Task4Hidden, RandomClothSpecsGiveTheGridAndItsSprings) {
   }
 }
 
-}  // namespace
+}  // namespace hidden
 }  // namespace a6::test
