@@ -12,7 +12,7 @@ endif()
 
 # The stages (everything but the command line), also linked by the tests' graders of a wrong
 # version or an alternative whose code is linked in (tests/grader/linked_grade_main.cpp).
-add_library(a6_grading OBJECT
+set(a6_grading_sources
   ${CMAKE_CURRENT_SOURCE_DIR}/grading/grading.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/checks.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/collector.cpp
@@ -20,6 +20,8 @@ add_library(a6_grading OBJECT
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/recording_student.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/replay/runs.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/build/startup.cpp)
+add_library(a6_grading OBJECT ${a6_grading_sources})
+a6_bundled(a6_grading 4 ${a6_grading_sources})  # in two bundles (cmake/A6FastBuild.cmake)
 target_include_directories(a6_grading PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_grading PUBLIC a6_suite a6_golden_checks a6_report a6_rubric a6_intake
                                         a6_build a6_probe_client a6_mistakes

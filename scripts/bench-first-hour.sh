@@ -9,9 +9,11 @@
 #   (1) the README's first command after install-deps: scripts/check.sh on the starter (the
 #       build of the grader from nothing, then the grading);
 #   (2) scripts/check.sh again, nothing changed;
-#   (3) the loop: a change to starter/spring.cpp, then `ctest --preset default -R Task1`
-#       (the median of N runs), after one `scripts/test.sh` that builds the rest.
-# Targets (issue 32): (1) at most 3 minutes, (2) at most 10 s, (3) at most 2 s. Prints each
+#   (3) the README's step 5 the first time: a change to starter/spring.cpp, then
+#       `ctest --preset default -R Task1` (it builds the test program: the framework, the
+#       starter's files, the link);
+#   (4) the loop: the same again (the median of N runs).
+# Targets (issue 32): (1) at most 3 minutes, (2) at most 10 s, (4) at most 2 s. Prints each
 # figure, and the lines check.sh printed about running without the grader's sandbox. --write
 # records them in tests/bench/results/first-hour.json, which the READMEs and the handout quote
 # (the docs test, scripts/docs-examples.sh, checks that they do).
@@ -25,7 +27,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --runs) runs=$2; shift ;;
     --write) write=1 ;;
-    -h | --help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench-first-hour: unknown argument '$1'" >&2; exit 2 ;;
   esac
   shift
@@ -61,26 +63,33 @@ bash "$home/release/scripts/install-deps.sh" >/dev/null  # root's step; nothing 
 first=$(seconds "$home/check1.log" bash scripts/check.sh)
 grep -q 'total ' "$home/check1.log" || { tail -20 "$home/check1.log"; exit 1; }
 second=$(seconds "$home/check2.log" bash scripts/check.sh)
-echo "bench-first-hour: scripts/test.sh once, for the loop (not timed)"
-as_student bash scripts/test.sh >"$home/test.log" 2>&1 || true
-loop=$(for k in $(seq "$runs"); do
-  as_student sh -c "printf '\nstatic int edit$k() { return $k; }\n' >>starter/spring.cpp"
-  seconds "$home/loop.log" ctest --preset default -R Task1
-done | median)
+# edited K: the README's step 5 after an edit of spring.cpp (a new function each time, so that
+# no compiler cache answers), its seconds.
+edited() {
+  as_student sh -c "printf '\nstatic int edit$1() { return $1; }\n' >>starter/spring.cpp"
+  seconds "$home/loop$1.log" ctest --preset default -R Task1
+}
+first_task1=$(edited 0)
+grep -q 'tests passed' "$home/loop0.log" || { tail -20 "$home/loop0.log"; exit 1; }
+loop=$(for k in $(seq "$runs"); do edited "$k"; done | median)
 
 printf 'bench-first-hour: first scripts/check.sh  %6.1f s  (target 180 s)\n' "$first"
 printf 'bench-first-hour: second scripts/check.sh %6.1f s  (target 10 s)\n' "$second"
+printf 'bench-first-hour: the first ctest -R Task1 %6.1f s\n' "$first_task1"
 printf 'bench-first-hour: the loop (median of %d)  %6.1f s  (target 2 s)\n' "$runs" "$loop"
 echo "bench-first-hour: what check.sh said about running without the sandbox:"
 grep -i 'root' "$home/check1.log" | sed 's/^/  /' || echo "  (nothing)"
 sandbox_lines=$(grep -ci 'root' "$home/check1.log" || true)
+sandbox_note=$(grep -i -m1 'root' "$home/check1.log" | sed 's/^ *//' || true)
 [ "$write" = 1 ] || exit 0
 jq -n --arg date "$(date -u +%F)" --arg commit "$(git rev-parse --short HEAD)" \
   --arg cores "$(nproc)" --argjson first "$first" --argjson second "$second" \
   --argjson loop "$loop" --argjson runs "$runs" --argjson sandbox_lines "$sandbox_lines" \
+  --argjson first_task1 "$first_task1" --arg sandbox_note "$sandbox_note" \
   '{measured: $date, commit: $commit, cores: ($cores | tonumber),
     how: "scripts/bench-first-hour.sh --write: the student release in the 0700 home of a user of its own, an empty compiler cache, the machine otherwise idle",
     first_check_s: ($first * 10 | round / 10), second_check_s: ($second * 10 | round / 10),
-    loop_s: ($loop * 10 | round / 10), loop_runs: $runs, sandbox_lines: $sandbox_lines}' \
+    first_task1_s: ($first_task1 * 10 | round / 10), loop_s: ($loop * 10 | round / 10),
+    loop_runs: $runs, sandbox_lines: $sandbox_lines, sandbox_note: $sandbox_note}' \
   >tests/bench/results/first-hour.json
 echo "bench-first-hour: wrote tests/bench/results/first-hour.json"

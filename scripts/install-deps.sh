@@ -86,8 +86,8 @@ if [ "$(id -u)" -ne 0 ]; then
   if command -v sudo >/dev/null 2>&1; then
     echo "install-deps: installing needs root: run  sudo bash $self" >&2
   else
-    echo "install-deps: installing needs root (this system has no sudo): run  su -c 'bash $self'" \
-      "and give root's password; then go on as yourself" >&2
+    echo "install-deps: installing needs root (this system has no sudo): run  su - -c 'bash $self'" \
+      "and give root's password (su -: root's own PATH, which apt needs); then go on as yourself" >&2
   fi
   exit 1
 fi

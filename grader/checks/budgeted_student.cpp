@@ -8,7 +8,7 @@
 namespace a6::grader {
 
 namespace {
-BudgetedStudent::Clock::duration seconds(double s) {
+BudgetedStudent::Clock::duration durationOf(double s) {
   return std::chrono::duration_cast<BudgetedStudent::Clock::duration>(
       std::chrono::duration<double>(s));
 }
@@ -19,13 +19,13 @@ double secondsUntil(BudgetedStudent::Clock::time_point t) {
 
 void BudgetedStudent::setTotalBudget(double s) {
   budget_ = s;
-  budgetEnd_ = Clock::now() + seconds(s);
+  budgetEnd_ = Clock::now() + durationOf(s);
 }
 
 void BudgetedStudent::startTest(double s) {
   limit_ = s;
   answersAtStart_ = hooks_.forceAnswers ? hooks_.forceAnswers() : 0;
-  deadline_ = Clock::now() + seconds(s);
+  deadline_ = Clock::now() + durationOf(s);
   lastFailure_.clear();
   machineFault_ = graderFault_ = false;
   closeCheck();

@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 namespace a6::grader {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using GradingClock = std::chrono::steady_clock;
 
 // As root, the sandbox runs the compiler and the probe as a user claimed for this grading, in
 // the group nogroup: they must be able to enter every folder down to the work folder. Such a
@@ -85,7 +85,7 @@ enum class Stop { NothingToGrade, UnusableRubric, GraderFailed };
 class Grading {
  public:
   Grading(const GradeOptions& options, const Rubric& rubric)
-      : options_(options), rubric_(rubric), start_(Clock::now()) {}
+      : options_(options), rubric_(rubric), start_(GradingClock::now()) {}
 
   int run() {
     if (!begin()) return 1;
@@ -107,7 +107,7 @@ class Grading {
  private:
   template <typename Stage>
   static double secondsOf(Stage stage) {
-    const Clock::time_point start = Clock::now();
+    const GradingClock::time_point start = GradingClock::now();
     stage();
     return process::secondsSince(start);
   }
@@ -143,7 +143,7 @@ class Grading {
 
   const GradeOptions& options_;
   const Rubric& rubric_;
-  const Clock::time_point start_;
+  const GradingClock::time_point start_;
   GradeReport report_;
   fs::path out_, results_, work_;
   fs::path
@@ -404,7 +404,7 @@ int Grading::finish() {
   } catch (const std::exception& e) {
     fail(std::string("scoring failed: ") + e.what());
   }
-  report_.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+  report_.seconds = std::chrono::duration<double>(GradingClock::now() - start_).count();
   rusage self{};
   if (getrusage(RUSAGE_SELF, &self) == 0)
     report_.peakRssMiB = static_cast<double>(self.ru_maxrss) / 1024;

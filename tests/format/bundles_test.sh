@@ -30,9 +30,11 @@ meetings() {
   "$ctags" --languages=C++ --language-force=C++ --kinds-C++=cdefgnstuvNU --extras=+r \
     --fields=+KsZ -o - "$@" 2>/dev/null |
     awk -F'\t' '{
-      kind = $4; scope = "-"
+      kind = $4; scope = "-"; holder = "namespace"  # (a class member is no lookup outside it)
       for (i = 5; i <= NF; i++)
-        if ($i ~ /^scope:/) { scope = substr($i, 7); sub(/^[a-z]+:/, "", scope) }
+        if ($i ~ /^scope:/) {
+          scope = substr($i, 7); holder = scope; sub(/:.*/, "", holder); sub(/^[a-z]+:/, "", scope)
+        }
       gsub(/__anon[0-9a-f]+/, "(anonymous)", scope)
       if (kind == "namespace") {
         ns = (scope == "-" ? "" : scope "::") $1
@@ -40,7 +42,7 @@ meetings() {
         if (index(opened[ns], " " $2 " ") == 0) opened[ns] = opened[ns] " " $2 " "
       } else if (kind == "using" || kind == "name") {
         imports[++n] = scope "\t" $2
-      } else if (kind == "macro" || scope ~ /\(anonymous\)/) {
+      } else if (kind == "macro" || (holder == "namespace" && scope ~ /\(anonymous\)/)) {
         print "word\t" $1 "\t" $2
       }
     }
