@@ -386,7 +386,7 @@ check_stated() {
   brief=$(sed -n 's/.*kMaxLines = \([0-9]*\);.*/\1/p' tests/support/brief_failures.h)
   fact README.md "A failing test prints at most %s lines" "$limit"
   fact docs/handout.md "No test prints more than %s" "$limit"
-  fact docs/handout.md "first message (%s lines at most)" "$brief"
+  fact docs/handout.md "(%s lines at most), and names the file" "$brief"
   packages=$(bash scripts/install-deps.sh | sed -n 's/.*all \([0-9]*\) packages.*/\1/p')
   for file in README.md grader/release/README.md docs/handout.md; do
     for stated in $(grep -oE '\b[0-9]+ (Debian )?packages\b' "$file" | awk '{ print $1 }' | sort -u); do
@@ -406,6 +406,19 @@ check_stated() {
       <(sed -n '/^```sh/,/^```/p' grader/release/README.md | sed -n 2,3p | awk '{ print $1, $2, $3 }'); then
     fail "README.md says the release's README has the same two commands; they differ"
   fi
+  # The task files in words ("the seven files"): framework/harness/task_files.h's list.
+  local words=(no one two three four five six seven eight nine ten) count
+  count=$(grep -oE '"[a-z_]+\.cpp"' framework/harness/task_files.h | wc -l)
+  for file in README.md grader/release/README.md docs/handout.md; do
+    for stated in $(grep -oE '\b(one|two|three|four|five|six|seven|eight|nine|ten) ([a-z.`]+ )?files\b' "$file" |
+      awk '{ print $1 }' | sort -u); do
+      [ "$stated" = "${words[count]}" ] || fail "$file counts $stated files; there are ${words[count]} task files"
+    done
+  done
+  # "at least ten times the tolerance it crosses": the margin the wrong versions' test asks for.
+  stated=$(sed -n 's/.*std::atof(margin.c_str()) >= \([0-9]*\)).*/\1/p' tests/grader/scores_test.cpp)
+  grep -q "at least ${words[stated]:-?} times the tolerance" README.md ||
+    fail "README.md should say the wrong versions miss by at least ${words[stated]:-?} times the tolerance (tests/grader/scores_test.cpp)"
   # A section of the README a script or the build names ('README.md, "Platforms"'): both READMEs
   # have it, since the release ships those scripts with its own README.
   for stated in $(git ls-files -- scripts CMakeLists.txt cmake grader/release |

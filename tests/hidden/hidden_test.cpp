@@ -26,7 +26,7 @@
 #include "suite.h"
 
 namespace a6::test {
-namespace hidden {
+namespace {
 
 #include "reference_models.inc"
 
@@ -344,5 +344,5 @@ TEST(Task4Hidden, RandomClothSpecsGiveTheGridAndItsSprings) {
   }
 }
 
-}  // namespace hidden
+}  // namespace
 }  // namespace a6::test
