@@ -290,8 +290,8 @@ check_facts() {
     [ "${stated//_/ }" = "$images + $hidden_images images" ] || restate README.md "${stated//_/ }" \
       "$images + $hidden_images images" "there are $images public and $hidden_images hidden images"
   done
-  no_update=1 fact README.md "apt-get: the %s packages it names" \
-    "$(bash scripts/install-deps.sh | sed -n 's/.*all \([0-9]*\) packages.*/\1/p')"
+  PACKAGES=$(bash scripts/install-deps.sh | sed -n 's/.*all \([0-9]*\) packages.*/\1/p')
+  no_update=1 fact README.md "apt-get: the %s packages it names" "$PACKAGES"
   local release
   release=$(sed -n 's|.*export-student.sh out/\([a-z-]*\) --zip.*|\1|p' scripts/main.sh)
   fact README.md "\`out/$release.zip\`"
@@ -387,7 +387,7 @@ check_stated() {
   fact README.md "A failing test prints at most %s lines" "$limit"
   fact docs/handout.md "No test prints more than %s" "$limit"
   fact docs/handout.md "(%s lines at most), and names the file" "$brief"
-  packages=$(bash scripts/install-deps.sh | sed -n 's/.*all \([0-9]*\) packages.*/\1/p')
+  packages=$PACKAGES
   for file in README.md grader/release/README.md docs/handout.md; do
     for stated in $(grep -oE '\b[0-9]+ (Debian )?packages\b' "$file" | awk '{ print $1 }' | sort -u); do
       [ "$stated" = "$packages" ] || fail "$file says $stated packages; install-deps names $packages"
@@ -410,7 +410,7 @@ check_stated() {
   local words=(no one two three four five six seven eight nine ten) count
   count=$(grep -oE '"[a-z_]+\.cpp"' framework/harness/task_files.h | wc -l)
   for file in README.md grader/release/README.md docs/handout.md; do
-    for stated in $(grep -oE '\b(one|two|three|four|five|six|seven|eight|nine|ten) ([a-z.`]+ )?files\b' "$file" |
+    for stated in $(grep -oE '\b(one|two|three|four|five|six|seven|eight|nine|ten) (task |\.cpp |`\.cpp` )?files\b' "$file" |
       awk '{ print $1 }' | sort -u); do
       [ "$stated" = "${words[count]}" ] || fail "$file counts $stated files; there are ${words[count]} task files"
     done
@@ -421,7 +421,7 @@ check_stated() {
     fail "README.md should say the wrong versions miss by at least ${words[stated]:-?} times the tolerance (tests/grader/scores_test.cpp)"
   # A section of the README a script or the build names ('README.md, "Platforms"'): both READMEs
   # have it, since the release ships those scripts with its own README.
-  for stated in $(git ls-files -- scripts CMakeLists.txt cmake grader/release |
+  for stated in $(git ls-files -- scripts CMakeLists.txt cmake grader/release ':!scripts/docs-examples.sh' |
     xargs grep -ohE 'README\.md, \\?"[A-Za-z ]+\\?"' | grep -oE '"[A-Za-z ]+\\?"' | tr -d '"\\' | tr ' ' '_' | sort -u); do
     for file in README.md grader/release/README.md; do
       grep -qE "^#+ ${stated//_/ }\$" "$file" ||

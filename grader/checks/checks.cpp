@@ -28,12 +28,15 @@ std::vector<std::string> failedChecks(const std::vector<TestOutcome>& tests) {
   return failed;
 }
 
-namespace {
-
 // The reference force models (tasks 1 and 2 solved; in a student release, empty: the student's
 // own). They stay in this process: the probe of tasks 3 and 5 asks for each force over a pipe
-// (harness/force_channel.h).
+// (harness/force_channel.h). In a namespace of this file's own, which no other file of its
+// bundle sees (cmake/A6FastBuild.cmake, a6_bundled).
+namespace checks_models {
 #include A6_FORCE_MODELS
+}  // namespace checks_models
+
+namespace {
 
 constexpr std::size_t kProbeOutputCap = 64u << 10;  // what the report keeps of the probe's output
 
@@ -70,7 +73,7 @@ std::unique_ptr<ProbePair> startProbes(const ChecksInput& in) {
     return c;
   };
   std::unique_ptr<ProbeClient> models = client(in.modelsProbe, "run-models");
-  models->serveForces(referenceForceModel());
+  models->serveForces(checks_models::referenceForceModel());
   return std::make_unique<ProbePair>(client(in.probe, "run"), std::move(models));
 }
 

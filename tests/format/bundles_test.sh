@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # The files compiled together in a bundle (cmake/A6FastBuild.cmake, a6_bundled) cannot meet: in
 # a bundle, what one file declares at namespace scope is seen by the files after it, so that a
-# helper of one could become what another file's call finds. Fails when a name of one file's
-# anonymous namespace, or a macro, is a word of another file of its bundle, or when a file
-# imports names (`using namespace`, `using a::b;`) into a namespace another file opens too.
+# helper of one could become what another file's call finds. Fails where that could happen
+# (meetings, below).
 # Measured by Universal Ctags, as function_size_test.sh does.
 #
 #   tests/format/bundles_test.sh BUNDLE_LIST WORK_DIR
@@ -20,29 +19,36 @@ done
 [ -n "$ctags" ] || { echo "SKIP: no Universal Ctags (Debian's universal-ctags package)"; exit 77; }
 
 # meetings FILE...: how the files of one bundle could meet, a line each:
-#   - a name of one file's anonymous namespace, or a macro, that is a word of another file (the
-#     other's unqualified lookup could find it; comments count too: a name used nowhere else
-#     cannot be a mistake);
-#   - `using` at namespace scope, in a namespace another file of the bundle opens too.
+#   - a name of one file's own (its anonymous namespace's, an unscoped enum's there, a static
+#     function or variable), or a macro, that is a word of another file (the other's unqualified
+#     lookup could find it; comments count too: a name used nowhere else cannot be a mistake);
+#   - an operator of one file's own (it has no word to look for);
+#   - `using` at namespace scope, in a namespace another file of the bundle opens too;
+#   - an #include inside an anonymous namespace (what it declares, ctags does not see).
 # Anonymous namespaces are one per translation unit: their ctags names (__anonN) are one here.
 meetings() {
   local name file other
   "$ctags" --languages=C++ --language-force=C++ --kinds-C++=cdefgnstuvNU --extras=+r \
-    --fields=+KsZ -o - "$@" 2>/dev/null |
+    --fields=+KsZf -o - "$@" 2>/dev/null |
     awk -F'\t' '{
-      kind = $4; scope = "-"; holder = "namespace"  # (a class member is no lookup outside it)
-      for (i = 5; i <= NF; i++)
+      kind = $4; scope = "-"; holder = "namespace"; static = 0  # (a class member is no lookup outside it)
+      for (i = 5; i <= NF; i++) {
         if ($i ~ /^scope:/) {
           scope = substr($i, 7); holder = scope; sub(/:.*/, "", holder); sub(/^[a-z]+:/, "", scope)
-        }
+        } else if ($i == "file:") static = 1
+      }
       gsub(/__anon[0-9a-f]+/, "(anonymous)", scope)
+      private = (holder == "namespace" || holder == "enum") && scope ~ /\(anonymous\)/
+      private = private || (static && holder == "namespace" && (kind == "function" || kind == "variable"))
       if (kind == "namespace") {
         ns = (scope == "-" ? "" : scope "::") $1
         gsub(/__anon[0-9a-f]+/, "(anonymous)", ns)
         if (index(opened[ns], " " $2 " ") == 0) opened[ns] = opened[ns] " " $2 " "
-      } else if (kind == "using" || kind == "name") {
+      } else if ((kind == "using" || kind == "name") && holder == "namespace") {
         imports[++n] = scope "\t" $2
-      } else if (kind == "macro" || (holder == "namespace" && scope ~ /\(anonymous\)/)) {
+      } else if (private && $1 ~ /^operator/) {
+        print "operator\t" $1 "\t" $2
+      } else if (kind == "macro" || private) {
         print "word\t" $1 "\t" $2
       }
     }
@@ -54,15 +60,21 @@ meetings() {
       }
     }' | sort -u |
     while IFS=$'\t' read -r what name file; do
-      if [ "$what" = import ]; then
-        echo "$file imports names into $name, which another file of the bundle shares"
-        continue
-      fi
-      for other in "$@"; do
-        [ "$other" != "$file" ] && grep -qw -- "$name" "$other" &&
-          echo "$name, of $(basename "$file")'s anonymous namespace or a macro, is a word of $(basename "$other")"
-      done
+      case "$what" in
+        import) echo "$file imports names into $name, which another file of the bundle shares" ;;
+        operator) echo "$name, of $(basename "$file"): an operator no other file may see (no word to look for)" ;;
+        word)
+          for other in "$@"; do
+            [ "$other" != "$file" ] && grep -qw -- "$name" "$other" &&
+              echo "$name, of $(basename "$file")'s own names, is a word of $(basename "$other")"
+          done ;;
+      esac
     done
+  # What a file includes inside its anonymous namespace, ctags does not see: none may.
+  for file in "$@"; do
+    awk -v f="$(basename "$file")" '/^namespace \{$/ { ++depth } /^\}  \/\/ namespace$/ { --depth }
+      depth > 0 && /^[ \t]*#[ \t]*include/ { print f ": includes inside its anonymous namespace: " $0 }' "$file"
+  done
 }
 
 # The canary: two files that share a helper in an anonymous namespace and import into a shared
