@@ -78,9 +78,10 @@ printf 'bench-first-hour: second scripts/check.sh %6.1f s  (target 10 s)\n' "$se
 printf 'bench-first-hour: the first ctest -R Task1 %6.1f s\n' "$first_task1"
 printf 'bench-first-hour: the loop (median of %d)  %6.1f s  (target 2 s)\n' "$runs" "$loop"
 echo "bench-first-hour: what check.sh said about running without the sandbox:"
-grep -i 'root' "$home/check1.log" | sed 's/^/  /' || echo "  (nothing)"
-sandbox_lines=$(grep -ci 'root' "$home/check1.log" || true)
-sandbox_note=$(grep -i -m1 'root' "$home/check1.log" | sed 's/^ *//' || true)
+notes=$(grep -i 'root' "$home/check1.log" | sed 's/^ *//' || true)
+sed 's/^/    /' <<<"${notes:-(nothing)}"
+sandbox_lines=$(grep -c . <<<"$notes" || true)
+sandbox_note=$(head -1 <<<"$notes")
 [ "$write" = 1 ] || exit 0
 jq -n --arg date "$(date -u +%F)" --arg commit "$(git rev-parse --short HEAD)" \
   --arg cores "$(nproc)" --argjson first "$first" --argjson second "$second" \

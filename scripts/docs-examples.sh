@@ -381,16 +381,22 @@ check_first_hour() {
 # test output's limits, the packages, the port of the desktop, a pattern said to match no test,
 # and the release's commands where README.md says they are its own.
 check_stated() {
-  local file stated packages limit brief
+  local file stated limit brief
   limit=$(sed -n 's/^set(A6_TEST_OUTPUT_LIMIT \([0-9]*\))$/\1/p' tests/CMakeLists.txt)
   brief=$(sed -n 's/.*kMaxLines = \([0-9]*\);.*/\1/p' tests/support/brief_failures.h)
   fact README.md "A failing test prints at most %s lines" "$limit"
   fact docs/handout.md "No test prints more than %s" "$limit"
   fact docs/handout.md "(%s lines at most), and names the file" "$brief"
-  packages=$PACKAGES
+  # (The task files counted in words, "the seven files": framework/harness/task_files.h's list.)
+  local words=(no one two three four five six seven eight nine ten) count
+  count=$(grep -oE '"[a-z_]+\.cpp"' framework/harness/task_files.h | wc -l)
   for file in README.md grader/release/README.md docs/handout.md; do
     for stated in $(grep -oE '\b[0-9]+ (Debian )?packages\b' "$file" | awk '{ print $1 }' | sort -u); do
-      [ "$stated" = "$packages" ] || fail "$file says $stated packages; install-deps names $packages"
+      [ "$stated" = "$PACKAGES" ] || fail "$file says $stated packages; install-deps names $PACKAGES"
+    done
+    for stated in $(grep -oE '\b(one|two|three|four|five|six|seven|eight|nine|ten) (task |\.cpp |`\.cpp` )?files\b' "$file" |
+      awk '{ print $1 }' | sort -u); do
+      [ "$stated" = "${words[count]}" ] || fail "$file counts $stated files; there are ${words[count]} task files"
     done
     for stated in $(grep -oE '\bport [0-9]+|:[0-9]{4}/vnc|forwarded port [0-9]+' "$file" | grep -oE '[0-9]+' | sort -u); do
       grep -q "A6_DESKTOP_PORT:-$stated}" scripts/desktop.sh ||
@@ -406,15 +412,6 @@ check_stated() {
       <(sed -n '/^```sh/,/^```/p' grader/release/README.md | sed -n 2,3p | awk '{ print $1, $2, $3 }'); then
     fail "README.md says the release's README has the same two commands; they differ"
   fi
-  # The task files in words ("the seven files"): framework/harness/task_files.h's list.
-  local words=(no one two three four five six seven eight nine ten) count
-  count=$(grep -oE '"[a-z_]+\.cpp"' framework/harness/task_files.h | wc -l)
-  for file in README.md grader/release/README.md docs/handout.md; do
-    for stated in $(grep -oE '\b(one|two|three|four|five|six|seven|eight|nine|ten) (task |\.cpp |`\.cpp` )?files\b' "$file" |
-      awk '{ print $1 }' | sort -u); do
-      [ "$stated" = "${words[count]}" ] || fail "$file counts $stated files; there are ${words[count]} task files"
-    done
-  done
   # "at least ten times the tolerance it crosses": the margin the wrong versions' test asks for.
   stated=$(sed -n 's/.*std::atof(margin.c_str()) >= \([0-9]*\)).*/\1/p' tests/grader/scores_test.cpp)
   grep -q "at least ${words[stated]:-?} times the tolerance" README.md ||

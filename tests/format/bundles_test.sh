@@ -10,13 +10,7 @@
 # 1 some do (each named), or the measure failed its canary, 77 skipped (no Universal Ctags).
 set -uo pipefail
 list="$1" work="$2"
-ctags=""
-for c in ctags-universal ctags; do
-  if command -v "$c" >/dev/null && "$c" --version 2>/dev/null | grep -q '^Universal Ctags'; then
-    ctags="$c"; break
-  fi
-done
-[ -n "$ctags" ] || { echo "SKIP: no Universal Ctags (Debian's universal-ctags package)"; exit 77; }
+source "$(dirname "$0")/find_ctags.sh"  # $ctags, or skipped
 
 # meetings FILE...: how the files of one bundle could meet, a line each:
 #   - a name of one file's own (its anonymous namespace's, an unscoped enum's there, a static

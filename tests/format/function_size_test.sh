@@ -13,14 +13,7 @@ set -uo pipefail
 root="$(cd "$1" && pwd)"
 work="$2"
 max="${3:-60}"
-# Debian's package names it ctags-universal, and ctags unless another ctags holds that name.
-ctags=""
-for c in ctags-universal ctags; do
-  if command -v "$c" >/dev/null && "$c" --version 2>/dev/null | grep -q '^Universal Ctags'; then
-    ctags="$c"; break
-  fi
-done
-[ -n "$ctags" ] || { echo "SKIP: no Universal Ctags (Debian's universal-ctags package)"; exit 77; }
+source "$(dirname "$0")/find_ctags.sh"  # $ctags, or skipped
 ctags() { command "$ctags" "$@"; }
 
 # FILE... -> "FILE:LINE: NAME is N lines" for each definition longer than $max lines.
