@@ -1,15 +1,6 @@
-// a6_grade: grades one submission (grader/DESIGN.md).
-//
-//   a6_grade SUBMISSION --out DIR [--rubric FILE] [--seed N] [--kit FILE] [--jobs N]
-//            [--time-budget S] [--tests FILTER] [--hide PATH]... [--sandbox-uid UID]
-//            [--quiet] [--color]
-//   a6_grade --list-tests [--rubric FILE]
-//   a6_grade --check-rubric [--rubric FILE]
-//   a6_grade --list-items [--rubric FILE]
-//
-// This file only reads the command line; the stages (grading/grading.cpp) write DIR/results.json
-// (Gradescope), DIR/report.html and a summary on stdout. Student code never runs in this process:
-// the suite's a6::test::student() is the probe.
+// a6_grade: grades one submission (grader/DESIGN.md; its options: a6_grade --help). This file
+// only reads the command line; the stages (grading/grading.cpp) write DIR/results.json
+// (Gradescope), DIR/report.html and a summary on stdout.
 //
 // Exit status: 0 when grading completed, whatever the score (a submission that does not build
 // gets its zero with the reasons in the report); 1 when the grader itself failed (missing kit,

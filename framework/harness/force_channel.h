@@ -1,29 +1,22 @@
 // The reference forces over a pipe: the checks of tasks 3 and 5 run the student's steppers with
-// the reference force models (a6/force_model.h), and those models stay in the grader. The probe
-// that runs such a request gets a ForceModel whose functions ask the grader, one force at a time,
-// on two extra fds; a thread of the grader answers with the reference models.
+// the reference force models (a6/force_model.h), which stay in the grader. The probe gets a
+// ForceModel that asks the grader for each force on two extra fds; a grader thread answers.
 //
-// Takes: on the probe's side, two fds; on the grader's side, the same two fds (other ends) and
-// the models. Gives: a ForceModel that forwards (probe); a loop that answers (grader).
+// Design note: why not link the models into the probe. Student code can read whatever is in its
+// address space: a probe holding the models hands a student tasks 1 and 2 solved. Over the pipe
+// it sees the forces of the states it asks about, which a stepper gets anyway.
 //
-// Design note: why not link the models into the probe.
-// Whatever is in the probe's address space, student code can read (its symbols, its heap): a
-// probe holding the models hands a student tasks 1 and 2 solved. Over the pipe the student's code
-// sees forces for the states it asks about, which is what a stepper gets anyway.
-//
-// The format: a request is a 4-byte count n (1 to kMaxRequestDoubles), then n doubles; the first
-// double is the kind. A spring is x1, v1, x2, v2, l0, ks, kd (vectors as x, y); a particle is
-// x, v, m, T; an environment is g, T_air, b, k_d, k_r, the number of planes and of circles, then
-// (normal, offset) of each plane and (center, radius) of each circle.
+// The format (native byte order, both ends on one machine): a 4-byte count n (1 to
+// kMaxRequestDoubles), then n doubles, the first the kind. A spring is x1, v1, x2, v2, l0, ks,
+// kd; a particle x, v, m, T; an environment g, T_air, b, k_d, k_r, the number of planes and of
+// circles, then (normal, offset) of each plane and (center, radius) of each circle.
 //   1, spring                          -> its force (2 doubles)
 //   2, particle, environment           -> its external force
 //   3, count, count springs            -> their forces (2 count doubles)
 //   4, count, environment, count particles -> their external forces
-// The batches make a stepper cheap: the probe asks for all of a system's forces at the first
-// force of a state and answers the others from that (ForceModel::springAmong, externalAmong).
-// Both ends run on the same machine: native byte order. A malformed request ends the serving,
-// and the grader closes its ends (the probe's next force then fails: only its own checks
-// suffer).
+// The batches make a stepper cheap: all of a state's forces in one round trip
+// (ForceModel::springAmong, externalAmong). A malformed request ends the serving: the probe's
+// next force fails, and only its own checks suffer.
 #pragma once
 
 #include <atomic>
@@ -50,8 +43,7 @@ bool available(int requestFd = kRequestFd, int answerFd = kAnswerFd);
 
 /// The grader's side: answers requests read from `requestFd` with `models` on `answerFd` until
 /// the requests end, one is malformed, or `stopFd` becomes readable (or is closed). Never throws.
-/// Returns how many requests were answered.
-/// `answered`, when given, counts the answers as they go (the grader's time allowance).
+/// Returns how many were answered; `answered`, when given, counts them as they go.
 std::size_t serve(int requestFd, int answerFd, int stopFd, const ForceModel& models,
                   std::atomic<std::size_t>* answered = nullptr);
 

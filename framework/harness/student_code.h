@@ -1,18 +1,14 @@
 // "The student's code", as the test suite sees it: a few coarse requests in plain data.
 //
-// Design note: why an interface.
-// The physics suite is written once against this class. Students run it in-process (the
-// test binary links their seven files: fast, and a debugger works). The grader runs the same
-// suite against a probe process that links the student's files and answers these requests
-// over a pipe, so student code never runs in the process that decides the grade. Hence every
-// request and result is plain data (no pointers, no callbacks): it must serialise.
+// Design note: why an interface. The suite is written once against it. Students run it
+// in-process (their seven files linked in: fast, and a debugger works); the grader runs it
+// against a sandboxed probe that links the student's files and answers over a pipe, so student
+// code never runs in the process that decides the grade. Hence plain data: it must serialise.
 //
-// Design note: one request type.
-// The requests are one std::variant (Request), answered by one call (ask); every
-// layer between a test and the student's functions (the wire, the probe, the time budget, the
-// transcript) is one function over it, so none of them names the kinds. Adding a kind takes its
-// struct here (in Request, with its Result and kKind), its field list (wire_fields.h) and its
-// student call (in_process.cpp).
+// Design note: one request type. The requests are one std::variant (Request), answered by one
+// call (ask); each layer between a test and the student's functions (wire, probe, time budget,
+// transcript) is one function over it. Adding a kind takes its struct here (in Request, with its
+// Result and kKind), its field list (wire_fields.h) and its student call (in_process.cpp).
 #pragma once
 
 #include <cstdint>
@@ -67,9 +63,8 @@ struct Outcome {
   }
 };
 
-// Each request kind is a plain struct: its answer type (Result), its name on the wire (kKind),
-// and its fields (harness/wire_fields.h). Request and Answer below list the kinds, and the
-// in-process implementation (in_process.cpp) is the student call each one makes.
+// Each request kind: its answer type (Result), its name on the wire (kKind); its fields are in
+// wire_fields.h.
 struct SpringForceResult;
 struct ForcesResult;
 struct SimulateResult;

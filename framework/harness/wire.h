@@ -1,26 +1,16 @@
-// The harness's requests and results as JSON documents (nlohmann::json), and those documents
-// as bytes on the pipe between the grader and the probe: MessagePack, nlohmann's binary form of
-// the same document. It carries a double as its 8 (or, where exact, 4) bytes: no number is
-// printed or parsed as text (with JSON text, the largest part of a grading's CPU). Why not
-// CBOR, its twin: CBOR's strings may come in chunks of any number, which nlohmann reads by
-// recursion, outside any container a depth check sees; a probe could overflow the grader's
-// stack with 4 MiB of them. In MessagePack only arrays and maps nest.
+// The harness's requests and results as JSON documents (nlohmann::json), sent between the grader
+// and the probe as MessagePack: a double travels as its bytes, never printed or parsed as text
+// (with JSON text, the largest part of a grading's CPU). Not CBOR: its strings may come in
+// chunks, which nlohmann reads by recursion outside any depth check, so 4 MiB of them could
+// overflow the grader's stack; in MessagePack only arrays and maps nest.
 //
-// Doubles must survive the trip exactly, NaN and infinities included (a NaN from student code
-// must reach the grader as NaN): encode every double so that decode(encode(x)) is bit-identical.
-//
-// Design note: the encoding.
-// A finite double is a number (-0.0 keeps its sign). NaN and infinities are strings, as they
-// would have to be in JSON text: "inf", "-inf", "nan" (the positive quiet NaN), "-nan" (the
-// negative one, what 0.0/0.0 gives on x86), and "nan:0x7ff0000000000001" for any other NaN,
-// with its bits. Vectors are [x, y]; structures are objects keyed by their C++ field names;
-// enums are lower-case strings. Text that is not valid UTF-8 (an exception message from
-// student code, or any bytes a probe sends) is decoded with U+FFFD in place of the bad bytes,
-// never refused. (A decoder also takes NaN and infinities sent as numbers, which a probe could
-// write: the same values.)
-//
-// Framing on a byte stream: a 4-byte little-endian length, then that many bytes of MessagePack.
-// A length above kMaxFrameBytes is garbage, never a reason to allocate.
+// Design note: the encoding. decode(encode(x)) is bit-identical for every double (a NaN from
+// student code must reach the grader as NaN). A finite double is a number (-0.0 keeps its sign);
+// "inf", "-inf", "nan" (the positive quiet NaN), "-nan" (0.0/0.0 on x86) and
+// "nan:0x7ff0000000000001" (any other NaN, its bits) are strings. Vectors are [x, y], structures
+// objects keyed by their C++ field names, enums lower-case strings. Text that is not UTF-8 is
+// decoded with U+FFFD for the bad bytes, never refused. Framing: a 4-byte little-endian length,
+// then that many bytes; a length above kMaxFrameBytes is garbage, never a reason to allocate.
 #pragma once
 
 #include <cstddef>

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <sstream>
 
-#include "probe/probe_client.h"
-
 namespace a6::grader {
 
 namespace {
@@ -24,13 +22,13 @@ void BudgetedStudent::setTotalBudget(double s) {
 
 void BudgetedStudent::startTest(double s) {
   limit_ = s;
-  answersAtStart_ = hooks_.forceAnswers ? hooks_.forceAnswers() : 0;
+  answersAtStart_ = probes_ ? probes_->forceAnswers() : 0;
   deadline_ = Clock::now() + durationOf(s);
   lastFailure_.clear();
   machineFault_ = graderFault_ = false;
   closeCheck();
-  if (hooks_.newCheck) hooks_.newCheck();
-  if (hooks_.startCheck) hooks_.startCheck(s, budgetEnd_);
+  if (probes_) probes_->allowMoreStarts(kStartsPerCheck);
+  if (probes_) probes_->startCheck(s, budgetEnd_);
 }
 
 int BudgetedStudent::checksOutOfTime() {
@@ -39,7 +37,7 @@ int BudgetedStudent::checksOutOfTime() {
 }
 
 void BudgetedStudent::closeCheck() {
-  const int timeouts = hooks_.probeTimeouts ? hooks_.probeTimeouts() : 0;
+  const int timeouts = probes_ ? probes_->incidents().timeouts : 0;
   if (outOfTime_ || timeouts > timeoutsAtStart_) ++checksOutOfTime_;
   timeoutsAtStart_ = timeouts;
   outOfTime_ = false;
@@ -55,7 +53,7 @@ std::string BudgetedStudent::refusal() {
     return out.str();
   }
   const double allowance =
-      hooks_.forceAnswers ? forceWaitAllowance(hooks_.forceAnswers() - answersAtStart_, limit_) : 0;
+      probes_ ? forceWaitAllowance(probes_->forceAnswers() - answersAtStart_, limit_) : 0;
   if (secondsUntil(deadline_) + allowance < 0.01) {
     outOfTime_ = true;
     machineFault_ = true;  // the time ran out between requests: a busy machine, maybe

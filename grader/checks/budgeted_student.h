@@ -1,16 +1,16 @@
 // The student's code as the suite sees it in the grader (checks stage): the probe, within the
 // running check's time limit and the time budget of all checks together. Without a probe (the
 // build failed) every request fails with the reason, so each check fails with a message
-// instead of the grader stopping. Takes the probe and its hooks; gives each request's result
+// instead of the grader stopping. Takes the probes; gives each request's result
 // and, at the end, how many checks ran out of time.
 #pragma once
 
 #include <chrono>
 #include <cstddef>
-#include <functional>
 #include <string>
 
 #include "harness/student_code.h"
+#include "probe/probe_pair.h"
 
 namespace a6::grader {
 
@@ -25,19 +25,11 @@ class BudgetedStudent final : public harness::StudentCode {
  public:
   using Clock = std::chrono::steady_clock;
 
-  /// The probe's hooks (all may be empty): give the probe a new check's time window (its limit,
-  /// and the end of the time budget no request may pass), give it a new check's starts, count
-  /// the forces the grader answered it, count its stopped requests.
-  struct Hooks {
-    std::function<void(double, Clock::time_point)> startCheck;
-    std::function<void()> newCheck;
-    std::function<std::size_t()> forceAnswers;
-    std::function<int()> probeTimeouts;
-  };
-
-  /// `probe` may be null: every request then fails with `unavailable`.
-  BudgetedStudent(harness::StudentCode* probe, Hooks hooks, std::string unavailable)
-      : probe_(probe), hooks_(std::move(hooks)), unavailable_(std::move(unavailable)) {}
+  /// `code` may be null: every request then fails with `unavailable`. `probes`, when `code` is
+  /// them, get each check's time window and starts, and count the forces answered and the
+  /// requests stopped.
+  BudgetedStudent(harness::StudentCode* code, ProbePair* probes, std::string unavailable)
+      : probe_(code), probes_(probes), unavailable_(std::move(unavailable)) {}
 
   /// Why the probe could not be started at all (a grader problem), or "".
   const std::string& startError() const { return startError_; }
@@ -73,7 +65,7 @@ class BudgetedStudent final : public harness::StudentCode {
   void closeCheck();
 
   harness::StudentCode* probe_;
-  Hooks hooks_;
+  ProbePair* probes_;
   std::string unavailable_;
   std::string lastFailure_;  // the last failed request of the running check
   std::string startError_;

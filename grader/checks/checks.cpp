@@ -77,18 +77,6 @@ std::unique_ptr<ProbePair> startProbes(const ChecksInput& in) {
   return std::make_unique<ProbePair>(client(in.probe, "run"), std::move(models));
 }
 
-BudgetedStudent::Hooks hooksOf(ProbePair* pair) {
-  BudgetedStudent::Hooks hooks;
-  if (pair == nullptr) return hooks;
-  hooks.startCheck = [pair](double limit, BudgetedStudent::Clock::time_point hardEnd) {
-    pair->startCheck(limit, hardEnd);
-  };
-  hooks.forceAnswers = [pair] { return pair->forceAnswers(); };
-  hooks.probeTimeouts = [pair] { return pair->incidents().timeouts; };
-  hooks.newCheck = [pair] { pair->allowMoreStarts(kStartsPerCheck); };
-  return hooks;
-}
-
 // RUN_ALL_TESTS with a Collector into `tests`; how many checks were skipped.
 int runAll(const Rubric& rubric, std::vector<TestOutcome>& tests, BudgetedStudent& student,
            bool progress) {
@@ -304,7 +292,7 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
     }
   }
   harness::StudentCode* code = in.linked != nullptr ? in.linked : probes.get();
-  BudgetedStudent student(code, hooksOf(probes.get()), unavailable);
+  BudgetedStudent student(code, probes.get(), unavailable);
   student.setTotalBudget(in.timeBudget);
   RecordingStudent recorded(student);
   a6::test::WatchedStudent watched(recorded);

@@ -1,14 +1,8 @@
-// The out-of-process StudentCode: each request goes to the sandboxed probe over a pipe, and
-// comes back as plain data. A crash, a timeout or garbage fails that request with the reason,
-// and the next request starts a fresh probe.
-//
-// Design note: one probe, many requests, restarts on failure.
-// The probe is started at the first request and serves every request after it (starting a
-// process per request would cost more than most requests). When a request fails in a way that
-// leaves the probe's state unknown (it crashed, it ran past the request's time limit, it answered
-// garbage or wrote to its answer pipe between requests), the probe is killed and the next request
-// starts a fresh one in a fresh work dir. After `maxStarts` starts every further request fails
-// at once: a submission that crashes on every request must not take forever to grade.
+// The out-of-process StudentCode: each request goes to the sandboxed probe over a pipe and comes
+// back as plain data. One probe serves every request (a process per request would cost more than
+// most requests); a crash, a time-out, garbage or output between requests fails that request
+// with the reason and kills the probe, and the next request starts a fresh one in a fresh work
+// folder, at most `maxStarts` times: code that crashes on every request must not take forever.
 #pragma once
 
 #include <chrono>

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <set>
@@ -139,29 +140,24 @@ class Checker {
     error(lineOf(node), where + " must be a number, not " + typeName(node.type()));
     return false;
   }
-  bool integer(const toml::node& node, const std::string& where, long long& out) {
-    if (node.is_integer()) {
-      out = *node.value<long long>();
+  // `out` from a node of TOML type T, or an error: "WHERE must be WHAT, not a ...".
+  template <class T, class Out>
+  bool typed(const toml::node& node, const std::string& where, const char* what, Out& out) {
+    if (node.is<T>()) {
+      out = *node.value<T>();
       return true;
     }
-    error(lineOf(node), where + " must be an integer, not " + typeName(node.type()));
+    error(lineOf(node), where + " must be " + what + ", not " + typeName(node.type()));
     return false;
+  }
+  bool integer(const toml::node& node, const std::string& where, long long& out) {
+    return typed<std::int64_t>(node, where, "an integer", out);
   }
   bool boolean(const toml::node& node, const std::string& where, bool& out) {
-    if (node.is_boolean()) {
-      out = *node.value<bool>();
-      return true;
-    }
-    error(lineOf(node), where + " must be true or false, not " + typeName(node.type()));
-    return false;
+    return typed<bool>(node, where, "true or false", out);
   }
   bool string(const toml::node& node, const std::string& where, std::string& out) {
-    if (node.is_string()) {
-      out = *node.value<std::string>();
-      return true;
-    }
-    error(lineOf(node), where + " must be a string, not " + typeName(node.type()));
-    return false;
+    return typed<std::string>(node, where, "a string", out);
   }
   bool visibility(const toml::node& node, const std::string& where, Visibility& out) {
     std::string text;

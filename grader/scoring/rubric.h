@@ -1,26 +1,8 @@
-// The instructor's rubric (TOML): points per test or group of tests, visibility, extra credit,
-// per-test time limits. Scores come from here and from pass/fail decided in the grader's process,
-// never from anything the probe prints.
-//
-// The format (docs/instructor.md has the full description):
-//
-//   title = "Assignment 6"
-//   total = 100                 # must equal the sum of the items' points, extra credit excluded
-//   visibility = "visible"      # optional default for every item
-//   time_limit = 10             # optional default for every item, s
-//
-//   [[item]]
-//   name = "Task 1: spring force"
-//   task = 1                    # 1..7, or 0 for none
-//   tests = "Task1Spring.*"     # a glob over "Suite.Test", or a list of globs
-//   points = 15
-//   all_or_nothing = false      # optional
-//   extra_credit = false        # optional
-//   visibility = "visible"      # optional: visible | hidden | after_due_date | after_published
-//   time_limit = 10             # optional: wall-clock limit per probe request of its tests, s
-//
-// A test counts for the FIRST item (in file order) whose globs match it, and only for that one:
-// put narrow items (extra credit, hidden checks) before the broad item of their task.
+// The instructor's rubric (TOML; the format: docs/instructor.md): points per test or group of
+// tests, visibility, extra credit, per-test time limits. Scores come from here and from pass/fail
+// decided in the grader's process, never from anything the probe prints. A test counts for the
+// FIRST item (in file order) whose globs match it: narrow items (extra credit, hidden checks)
+// go before the broad item of their task.
 #pragma once
 
 #include <filesystem>
