@@ -142,17 +142,11 @@ const char* const kPlayerScript = R"JS(
 )JS";
 
 // JSON inside <script>: no "</" that could end the element.
-std::string scriptSafe(const std::string& json) {
-  std::string out;
-  out.reserve(json.size());
-  for (const char c : json) {
-    if (c == '<') {
-      out += "\\u003c";
-    } else {
-      out += c;
-    }
+std::string scriptSafe(std::string json) {
+  for (std::size_t at = json.find('<'); at != std::string::npos; at = json.find('<', at)) {
+    json.replace(at, 1, "\\u003c");
   }
-  return out;
+  return json;
 }
 
 // The energy plot's range: the reference's, widened for the student's values by up to 1.5 of its

@@ -1,8 +1,5 @@
-// The report's replays (report stage): per imaged scene, the student's run and the reference's
-// side by side or overlaid in a small player (play, pause, a time scrubber, frame steps, the
-// frame where they part), and beside it an inline SVG plot of the energy and the position error,
-// with what its shape means. Self-contained: one script in the page, no network, no font.
-// Takes the report's ReplayViews; gives HTML.
+// The report's replays: per imaged scene, the student's run beside the reference's in a small
+// player, with SVG plots of the energy and the position error. One script, no network.
 #pragma once
 
 #include <sstream>

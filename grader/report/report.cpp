@@ -12,6 +12,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string_view>
 
 #include "render/replay.h"
 #include "report/replay_html.h"
@@ -35,20 +36,19 @@ std::string cap(const std::string& text, std::size_t limit) {
 
 std::string fmt(double x) { return formatPoints(x); }
 
-const TaskBuild* buildOf(const GradeReport& report, int task) {
-  if (task < 1 || task > static_cast<int>(kTaskFiles.size())) return nullptr;
-  for (const TaskBuild& t : report.build.tasks) {
-    if (t.file == kTaskFiles[static_cast<std::size_t>(task - 1)]) return &t;
-  }
-  return nullptr;
-}
-
 // 1..7 for a task file name, 0 otherwise.
 int taskOf(const std::string& file) {
   for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {
     if (kTaskFiles[i] == file) return static_cast<int>(i + 1);
   }
   return 0;
+}
+
+const TaskBuild* buildOf(const GradeReport& report, int task) {
+  for (const TaskBuild& t : report.build.tasks) {
+    if (task > 0 && taskOf(t.file) == task) return &t;
+  }
+  return nullptr;
 }
 
 // How a task file built: a keyword (results.json's extra_data.build) and a sentence (the output,
@@ -325,27 +325,24 @@ std::string writeFileAtomically(const std::filesystem::path& file, const std::st
       file.string() + ".tmp." + std::to_string(static_cast<long>(::getpid()));
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) return "cannot write " + tmp.string() + ": " + std::strerror(errno);
-  std::size_t done = 0;
-  while (done < text.size()) {
+  auto failed = [&](const std::string& what) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmp.c_str());
+    return what + ": " + why;
+  };
+  for (std::size_t done = 0; done < text.size();) {
     const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
-      const std::string why = std::strerror(errno);
+      const std::string why = failed("cannot write " + tmp.string());
       ::close(fd);
-      ::unlink(tmp.c_str());
-      return "cannot write " + tmp.string() + ": " + why;
+      return why;
     }
     done += static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const std::string why = std::strerror(errno);
-    ::unlink(tmp.c_str());
-    return "cannot write " + tmp.string() + ": " + why;
-  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) return failed("cannot write " + tmp.string());
   if (::rename(tmp.c_str(), file.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    ::unlink(tmp.c_str());
-    return "cannot rename " + tmp.string() + " to " + file.string() + ": " + why;
+    return failed("cannot rename " + tmp.string() + " to " + file.string());
   }
   return {};
 }
@@ -371,31 +368,14 @@ std::string writeResultsJson(const GradeReport& report, const std::filesystem::p
 // HTML -----------------------------------------------------------------------------------------
 
 std::string htmlEscape(const std::string& text) {
+  static const std::map<char, std::string_view> kEntities = {{'&', "&amp;"},  {'<', "&lt;"},
+                                                             {'>', "&gt;"},   {'"', "&quot;"},
+                                                             {'\'', "&#39;"}, {'\0', "&#xFFFD;"}};
   std::string out;
   out.reserve(text.size() + text.size() / 8);
   for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      case '\0':
-        out += "&#xFFFD;";
-        break;
-      default:
-        out += c;
-    }
+    const auto e = kEntities.find(c);
+    out += e == kEntities.end() ? std::string_view(&c, 1) : e->second;
   }
   return out;
 }
@@ -619,15 +599,15 @@ std::string terminalSummary(const GradeReport& report, bool color) {
         << std::setw(16) << points << "   " << (s.failed == 0 && !s.tests.empty() ? green : red)
         << s.passed << " passed, " << s.failed << " failed" << reset << "\n";
   }
-  out << "  " << std::left << std::setw(52) << "total" << std::right << std::setw(16)
-      << (fixed(report.score - report.extraCredit, 2) + " / " + fixed(report.maxScore, 2));
-  if (report.extraCredit > 0) out << "   +" << fixed(report.extraCredit, 2) << " extra credit";
-  out << "\n";
-  if (const VisibleTotals v = visibleTotals(report); v.laterItems > 0) {
-    out << "  " << std::left << std::setw(52) << "shown to students before the due date"
-        << std::right << std::setw(16) << (fixed(v.score, 2) + " / " + fixed(v.max, 2));
-    if (v.extraCredit > 0) out << "   +" << fixed(v.extraCredit, 2) << " extra credit";
+  auto totalLine = [&](const char* label, double score, double max, double extraCredit) {
+    out << "  " << std::left << std::setw(52) << label << std::right << std::setw(16)
+        << (fixed(score, 2) + " / " + fixed(max, 2));
+    if (extraCredit > 0) out << "   +" << fixed(extraCredit, 2) << " extra credit";
     out << "\n";
+  };
+  totalLine("total", report.score - report.extraCredit, report.maxScore, report.extraCredit);
+  if (const VisibleTotals v = visibleTotals(report); v.laterItems > 0) {
+    totalLine("shown to students before the due date", v.score, v.max, v.extraCredit);
   }
   for (const TaskBuild& t : report.build.tasks) {
     if (t.usesStarter()) out << "  " << red << t.file << ": " << describeBuild(t) << reset << "\n";
