@@ -4,20 +4,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <set>
 #include <sstream>
-#include <system_error>
 
 namespace a6::grader::batch {
 
-namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
+
+int taskOfTag(const std::string& tag) {
+  const bool named = tag.size() == 5 && tag.rfind("task", 0) == 0 && tag[4] >= '1' &&
+                     tag[4] <= '0' + static_cast<int>(kTasks);
+  return named ? tag[4] - '0' : 0;
+}
 
 namespace {
 
@@ -33,18 +34,7 @@ std::string number(double x) {
 Json optionalNumber(const std::optional<double>& x) { return x ? Json(*x) : Json(nullptr); }
 
 std::optional<double> numberOf(const Json& j) {
-  if (j.is_number()) return j.get<double>();
-  return std::nullopt;
-}
-
-}  // namespace
-
-namespace {
-
-std::string oneNumber(double n) {
-  std::ostringstream out;
-  out << n;
-  return out.str();
+  return j.is_number() ? std::optional<double>(j.get<double>()) : std::nullopt;
 }
 
 // extra_data.incidents as lines for a TA: "the code crashed 2 times", ...
@@ -52,23 +42,15 @@ std::vector<std::string> flagsOf(const Json& incidents) {
   std::vector<std::string> flags;
   auto add = [&](const char* key, const std::string& what) {
     const double n = incidents.is_object() ? numberOf(incidents.value(key, Json())).value_or(0) : 0;
-    if (n > 0) flags.push_back(what + " " + oneNumber(n) + (n == 1 ? " time" : " times"));
+    std::ostringstream line;
+    line << what << " " << n << (n == 1 ? " time" : " times");
+    if (n > 0) flags.push_back(line.str());
   };
   add("crashes", "the code crashed");
   add("timeouts", "the code ran out of time");
   add("start_failures", "the program did not start");
   return flags;
 }
-
-}  // namespace
-
-int taskOfTag(const std::string& tag) {
-  const bool named = tag.size() == 5 && tag.rfind("task", 0) == 0 && tag[4] >= '1' &&
-                     tag[4] <= '0' + static_cast<int>(kTasks);
-  return named ? tag[4] - '0' : 0;
-}
-
-namespace {
 
 // The task (1..kTasks) a test's tags name, 0 for none; and whether they say extra credit.
 std::pair<int, bool> taskOfTags(const Json& tags) {

@@ -1,8 +1,6 @@
-// Grading a folder of submissions (a6_batch, grader/batch/batch_main.cpp): finding the submissions
-// in the layouts TAs receive them in, reading what a6_grade wrote for each, the gradebook, the
-// markers that let an interrupted batch resume, and the summary. The processes (a6_grade per
-// submission, time limits, signals) are batch_main.cpp's, the command line command_line.*'s and
-// the progress bar progress.*'s.
+// Grading a folder of submissions (a6_batch): finding them in the layouts TAs receive, reading
+// what a6_grade wrote for each, the gradebook, the resume markers and the summary. The processes
+// are batch_main.cpp's, the command line command_line.*'s, the progress bar progress.*'s.
 //
 // Layouts of the input folder:
 //   plain       each sub-folder or archive (.zip .tar .tar.gz .tgz) is one student, named by
@@ -65,9 +63,8 @@ Layout detectLayout(const std::filesystem::path& input, const std::filesystem::p
 Inventory findSubmissions(const std::filesystem::path& input, Layout layout,
                           const std::filesystem::path& exclude = {});
 
-/// submission_metadata.yml: "submission_<id>" -> its submitters. Reads only the keys the batch
-/// needs (:submitters: with :name:, :email:, :sid:), line by line; everything else (scores,
-/// history, block scalars) is skipped.
+/// submission_metadata.yml: "submission_<id>" -> its submitters (:name:, :email:, :sid:); empty
+/// when it is not a YAML map.
 std::map<std::string, std::vector<Person>> parseGradescopeMetadata(const std::string& yaml);
 
 /// A file name as Canvas writes it into "Download Submissions".
@@ -88,9 +85,8 @@ std::string stage(Submission& submission, const std::filesystem::path& dir);
 /// A file name made from any text: letters, digits, '.', '-', '_' (no leading '.'), never empty.
 std::string safeName(const std::string& text);
 
-/// 16 hex digits over every input file of the submission (names, kinds, contents; links by
-/// their target) and `options` (what else decides the grade: the rubric's text, the seed, ...):
-/// a changed submission or changed options give another fingerprint.
+/// 16 hex digits over the submission's files (names, kinds, contents; links by their target) and
+/// `options` (what else decides the grade: the rubric's text, the seed, ...).
 std::string fingerprint(const Submission& submission, const std::string& options);
 
 /// Tasks 1 to 7 (harness/task_files.h): a column each in the gradebook.
@@ -111,25 +107,23 @@ inline constexpr const char* kNotGraded = "not graded";
 /// One submission's outcome: a gradebook row without the people.
 struct Outcome {
   std::string status = kGraderError;
-  /// Points, present when graded (or graded with a failed build): the total (extra credit
-  /// included), the rubric's maximum, each task's regular points, the extra credit.
+  /// Present when graded (or with a failed build): the total (extra credit included), the
+  /// rubric's maximum, each task's regular points, the extra credit.
   std::optional<double> total, max;
   std::array<std::optional<double>, kTasks> tasks{};
   std::optional<double> extraCredit;
   double seconds = 0;  ///< a6_grade's wall-clock time
   std::string reason;  ///< why it is not "graded" (for the summary)
-  /// Graded, but for a TA to look at: "the code crashed 3 times", "2 checks ran out of time",
-  /// from results.json's extra_data.incidents.
+  /// Graded, but for a TA to look at (extra_data.incidents): "the code crashed 3 times".
   std::vector<std::string> flags;
   /// The known mistakes the report named, by id (results.json's extra_data.mistakes).
   std::vector<std::string> mistakes;
   bool hasPoints() const { return total.has_value(); }
 };
 
-/// The outcome a6_grade's results.json gives (exit status 0): graded, or build failed when a
-/// task file was missing or did not compile or link (extra_data.build), or a grader error when
-/// the file is missing, invalid or was left unfinished. Per-task points are the results' tests
-/// summed by their "task<N>" tag, extra credit (tag "extra_credit") apart.
+/// The outcome a6_grade's results.json gives: graded; build failed (extra_data.build); not
+/// graded (extra_data.refused); or a grader error when it is missing, invalid or unfinished.
+/// Per-task points: the tests summed by their "task<N>" tag, "extra_credit" apart.
 Outcome outcomeOfResults(const std::string& resultsJson);
 
 /// The marker written last into a graded submission's folder: its fingerprint and outcome.

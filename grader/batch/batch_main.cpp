@@ -4,49 +4,33 @@
 //            [--grader PATH] [--rubric FILE] [--kit FILE] [--seed N] [--time-budget S]
 //            [--keep-work] [--similarity [--starter DIR]]
 //
-// Writes DIR/<student>/ (results.json, report.html, grade.log: a6_grade's output, batch.json: the
-// marker), DIR/gradebook.csv and DIR/insights.html (grader/insights/: the class's picture, with
-// the submissions' code similarity under --similarity), shows a progress bar on stderr and prints a
-// summary on stdout.
-//
-// Exit status: 0 when every submission has a grade (graded, or graded with a failed build); 1
-// when some have none (grader error, timed out, crashed); 2 for a bad command line or an input
-// folder that cannot be graded; 128+N when stopped by signal N (a re-run resumes).
+// Writes DIR/<student>/ (a6_grade's results.json, report.html and grade.log; batch.json, the
+// marker), DIR/gradebook.csv and DIR/insights.html; a progress bar on stderr, a summary on stdout.
+// Exit status: 0 when every submission has a grade; 1 when some have none; 2 for a bad command
+// line or input folder; 128+N when stopped by signal N (a re-run resumes).
 //
 // Runner notes
 // ------------
-// One a6_grade per submission, a child process in its own process group: a crash or a hang
-// costs that submission only, and --timeout kills the group. a6_grade's sandboxed children (the
-// compiler, the probe) are in sessions of their own but die with it (the sandbox sets
-// PR_SET_PDEATHSIG); whatever escaped them is re-parented to a6_grade (a child subreaper) and,
-// once a6_grade is gone, to this process (a subreaper too): any child of ours that is not a
-// running a6_grade is such a stray, and is killed. Each a6_grade gets PR_SET_PDEATHSIG as well,
-// so even `kill -9` of the batch stops the gradings it started.
+// One a6_grade per submission, in its own process group: a crash or a hang costs that submission
+// only, and --timeout kills the group. Its sandboxed children die with it (PR_SET_PDEATHSIG, which
+// each a6_grade gets too, so even `kill -9` of the batch stops its gradings); what escapes is
+// re-parented to this process (a child subreaper), and any child of ours that is no running
+// a6_grade is such a stray, and is killed.
 //
-// One thread: a loop that starts children, reaps them, enforces the time limits and redraws the
-// progress, ten times a second. Signals only set a flag that the loop reads.
+// One thread: a loop starts children, reaps them, enforces the time limits and redraws the
+// progress ten times a second. Signals only set a flag that the loop reads.
 //
-// Resume: a submission's marker (batch.json: its fingerprint and outcome) is removed before it
-// is graded and written last, after a6_grade has exited and its results were read. A re-run
-// skips a submission whose marker holds the same fingerprint (the same input files, rubric,
-// seed and time budget) and a grade; everything else is graded (again).
+// Resume: a submission's marker (batch.json: fingerprint and outcome) is removed before it is
+// graded and written last; a re-run skips a submission whose marker holds the same fingerprint
+// (input files, rubric, seed, time budget) and a grade.
 //
-// Other students' work: every a6_grade gets --hide for the input folder and the output folder
-// (its own work folder excepted), so that a submission's compiler and probe cannot read another
-// submission or its results. The student folders are all created before the first grading, so
-// that each a6_grade finds them to hide.
+// Other students' work: every a6_grade gets --hide for the input and the output folder, created
+// in full before the first grading so that each finds them to hide; as root each claims a sandbox
+// user of its own (grader/sandbox/process.h). No compiled object is shared between submissions (it
+// can depend on where it was compiled), only the kit's known objects.
 //
-// Compiled objects: none is shared between submissions (a file's object can depend on where
-// it was compiled); only the kit's own known objects (Kit::knownObjects) are used by all.
-//
-// Other students' processes: as root, every a6_grade claims a sandbox user of its own for its
-// whole grading (grader/sandbox/process.h), so gradings that run at once never share a process
-// limit, and a process one submission left behind cannot touch the next one's.
-//
-// Reaping: every wait names its pid (an a6_grade of ours, or a stray being ended), never
-// waitpid(-1), which could reap an a6_grade before the loop that waits for it: that batch would
-// wait forever. An a6_grade that vanishes (reaped by anyone else) is a grader error for its
-// submission, and the batch goes on.
+// Reaping names each pid, never waitpid(-1), which could reap an a6_grade before the loop that
+// waits for it (that batch would wait forever). One that vanishes is a grader error.
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/prctl.h>
@@ -128,21 +112,20 @@ class Batch {
 
   int run() {
     const auto start = Clock::now();
-    std::vector<std::size_t>& queue = queue_;
-    queue = toGrade();
+    queue_ = toGrade();
     writeGradebook();
     const int skipped = static_cast<int>(std::count(skipped_.begin(), skipped_.end(), true));
     Progress progress(static_cast<int>(inv_.submissions.size()), skipped,
-                      static_cast<int>(queue.size()), jobs_, isatty(STDERR_FILENO) == 1);
+                      static_cast<int>(queue_.size()), jobs_, isatty(STDERR_FILENO) == 1);
     std::size_t next = 0;
     auto lastSweep = Clock::now();
-    while (next < queue.size() || !running_.empty()) {
+    while (next < queue_.size() || !running_.empty()) {
       if (gSignal != 0) {
         progress.clear();
         return interrupted(static_cast<int>(gSignal));
       }
-      while (running_.size() < static_cast<std::size_t>(jobs_) && next < queue.size()) {
-        const std::size_t i = queue[next++];
+      while (running_.size() < static_cast<std::size_t>(jobs_) && next < queue_.size()) {
+        const std::size_t i = queue_[next++];
         if (!launch(i)) finished(i, progress);
       }
       reapEnded(progress);
@@ -230,19 +213,22 @@ class Batch {
     return true;
   }
 
+  static void killGroup(pid_t pid) {
+    kill(-pid, SIGKILL);
+    kill(pid, SIGKILL);
+  }
+
   void enforceTimeouts() {
     for (Running& r : running_) {
       if (!r.timedOut && Clock::now() >= r.deadline) {
         r.timedOut = true;
-        kill(-r.pid, SIGKILL);
-        kill(r.pid, SIGKILL);
+        killGroup(r.pid);
       }
     }
   }
 
   void failedToStart(std::size_t i, const std::string& why) {
     Outcome o;
-    o.status = kGraderError;
     o.reason = why;
     outcomes_[i] = o;
     ranSeconds_.push_back(o.seconds);
@@ -353,40 +339,33 @@ class Batch {
     const int status = waited.value_or(0);
     const Submission& s = inv_.submissions[r.index];
     const fs::path dir = out_ / s.key;
-    Outcome o;
+    const std::string seeLog = std::string(" (see ") + kLog + ")";
+    Outcome o;  // a grader error unless said otherwise
     if (vanished) {
-      o.status = kGraderError;
-      o.reason = "a6_grade vanished: something else reaped it (see " + std::string(kLog) + ")";
+      o.reason = "a6_grade vanished: something else reaped it" + seeLog;
     } else if (r.timedOut) {
       o.status = kTimedOut;
       o.reason = "stopped after " + oneDecimal(o_.timeout) + " s (--timeout)";
     } else if (WIFSIGNALED(status)) {
       o.status = kCrashed;
-      o.reason = std::string("a6_grade was killed by ") + strsignal(WTERMSIG(status)) + " (see " +
-                 kLog + ")";
+      o.reason = std::string("a6_grade was killed by ") + strsignal(WTERMSIG(status)) + seeLog;
     } else {
       const int code = WEXITSTATUS(status);
       const Outcome fromResults = outcomeOfResults(readAll(dir / "results.json"));
-      if (code == 0) {
-        o = fromResults;
+      if (code == 0 || (code == 2 && fromResults.status == kNotGraded)) {
+        o = fromResults;  // graded, or nothing to grade in it: 0 points, and why
       } else if (code == 1) {
-        o.status = kGraderError;
         o.reason = !fromResults.reason.empty() && !hasGrade(fromResults)
                        ? fromResults.reason
                        : "a6_grade failed (exit status 1; see " + std::string(kLog) + ")";
-      } else if (code == 2 && fromResults.status == kNotGraded) {
-        o = fromResults;  // nothing to grade in it: 0 points, and why
       } else if (code == 2) {
-        o.status = kGraderError;
-        o.reason = !fromResults.reason.empty()
-                       ? fromResults.reason
-                       : "a6_grade refused its command line (see " + std::string(kLog) + ")";
+        o.reason = !fromResults.reason.empty() ? fromResults.reason
+                                               : "a6_grade refused its command line" + seeLog;
       } else if (code == 127) {
-        o.status = kGraderError;
-        o.reason = "a6_grade could not be run (see " + std::string(kLog) + ")";
+        o.reason = "a6_grade could not be run" + seeLog;
       } else {
         o.status = kCrashed;
-        o.reason = "a6_grade exited with " + std::to_string(code) + " (see " + kLog + ")";
+        o.reason = "a6_grade exited with " + std::to_string(code) + seeLog;
       }
     }
     o.seconds = secondsSince(r.start);
@@ -453,10 +432,7 @@ class Batch {
   }
 
   int interrupted(int signo) {
-    for (const Running& r : running_) {
-      kill(-r.pid, SIGKILL);
-      kill(r.pid, SIGKILL);
-    }
+    for (const Running& r : running_) killGroup(r.pid);
     for (const Running& r : running_) process::waitFor(r.pid, 30);
     const std::size_t stopped = running_.size();
     running_.clear();

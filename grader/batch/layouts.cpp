@@ -1,17 +1,10 @@
-// Grading a folder of submissions, the first half: the layouts (a Gradescope export, a Canvas
-// download, a plain folder), each submission found, named, staged and fingerprinted. See batch.h;
-// outcomes and the gradebook are in batch.cpp.
+// The layouts of an input folder: each submission found, named, staged and fingerprinted. See
+// batch.h; outcomes and the gradebook are in batch.cpp.
 //
-// Batch notes
-// -----------
-// The input folder is the TA's, but the files in it are the students': a name becomes a path
-// only through safeName(), and nothing here opens a submission's archives (a6_grade's intake does,
-// with its limits). Canvas files are copied, never moved: the input folder stays as downloaded,
-// so a re-run finds the same submissions.
-//
-// Keys (a submission's folder under the output folder) must come out the same on every run, or
-// a resumed batch would not find its markers: the entries are read in sorted order and a
-// duplicate key gets "-2", "-3", ... in that order.
+// Notes: the files are the students', so a name becomes a path only through safeName(), and no
+// archive is opened here (a6_grade's intake does, with its limits). Canvas files are copied, never
+// moved, so a re-run finds the same submissions. Keys must be the same on every run, or a resume
+// would not find its markers: entries are read sorted, and a duplicate key gets "-2", "-3", ...
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -92,10 +85,7 @@ void assignKeys(std::vector<Submission>& subs, std::vector<std::string>& notes) 
 
 // "spring-1.cpp" -> ("spring.cpp", 1); "sub-2.tar.gz" -> ("sub.tar.gz", 2).
 std::pair<std::string, int> withoutReupload(const std::string& name) {
-  std::string ext;
-  for (const std::string multi : {".tar.gz", ".tar.bz2", ".tar.xz"}) {
-    if (name.size() > multi.size() && endsWith(lower(name), multi)) ext = multi;
-  }
+  std::string ext = archiveExtension(name);
   if (ext.empty()) {
     const std::size_t dot = name.rfind('.');
     if (dot != std::string::npos && dot > 0) ext = name.substr(dot);
@@ -138,15 +128,8 @@ struct Hash : Fnv1a {
 // ---- names ------------------------------------------------------------------------------------
 
 const char* toString(Layout layout) {
-  switch (layout) {
-    case Layout::Plain:
-      return "plain";
-    case Layout::Gradescope:
-      return "gradescope";
-    case Layout::Canvas:
-      return "canvas";
-  }
-  return "?";
+  static const char* const kNames[] = {"plain", "gradescope", "canvas"};  // in Layout's order
+  return kNames[static_cast<int>(layout)];
 }
 
 std::optional<Layout> layoutNamed(const std::string& name) {
@@ -240,6 +223,11 @@ std::optional<CanvasName> parseCanvasName(const std::string& fileName) {
 
 namespace {
 
+// Entries no student made: hidden files (.DS_Store, .git), a Mac zip's __MACOSX folder.
+bool isSystemName(const std::string& name) {
+  return name.empty() || name[0] == '.' || name == "__MACOSX";
+}
+
 bool sameFile(const fs::path& a, const fs::path& b) {
   std::error_code ec;
   return !b.empty() && fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec);
@@ -254,8 +242,8 @@ fs::path gradescopeRoot(const fs::path& input, const fs::path& exclude) {
   int dirs = 0;
   for (fs::directory_iterator it(input, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
-    if (!it->is_directory(ec) || it->is_symlink(ec) || name.empty() || name[0] == '.' ||
-        name == "__MACOSX" || sameFile(it->path(), exclude)) {
+    if (!it->is_directory(ec) || it->is_symlink(ec) || isSystemName(name) ||
+        sameFile(it->path(), exclude)) {
       continue;
     }
     ++dirs;
@@ -281,9 +269,8 @@ std::vector<fs::directory_entry> sortedEntries(const fs::path& dir, std::string&
   return entries;
 }
 
-// Entries no student made: hidden files (.DS_Store, .git), a Mac zip's __MACOSX folder.
 bool systemEntry(const std::string& name, std::vector<std::string>& notes) {
-  if (name.empty() || name[0] == '.' || name == "__MACOSX") {
+  if (isSystemName(name)) {
     notes.push_back(name + ": hidden or operating-system files, not a submission: skipped");
     return true;
   }
@@ -297,21 +284,17 @@ void findPlain(const fs::path& input, const fs::path& exclude, Inventory& inv) {
     const fs::file_status st = e.symlink_status(ec);
     if (sameFile(e.path(), exclude)) continue;  // the output folder
     if (systemEntry(name, inv.notes)) continue;
-    Submission s;
-    if (fs::is_directory(st)) {
-      s.key = safeName(name);
-      s.path = e.path();
-      s.people.push_back({name, "", ""});
-    } else if (fs::is_regular_file(st) && !archiveExtension(name).empty()) {
-      const std::string stem = name.substr(0, name.size() - archiveExtension(name).size());
-      s.key = safeName(stem);
-      s.path = e.path();
-      s.people.push_back({stem, "", ""});
-    } else {
+    const std::string ext = fs::is_regular_file(st) ? archiveExtension(name) : "";
+    if (!fs::is_directory(st) && ext.empty()) {
       inv.notes.push_back(name + ": " + describeEntry(st) +
                           ", neither a folder nor an archive (.zip .tar .tar.gz .tgz): skipped");
       continue;
     }
+    const std::string stem = name.substr(0, name.size() - ext.size());  // a folder: its name
+    Submission s;
+    s.key = safeName(stem);
+    s.path = e.path();
+    s.people.push_back({stem, "", ""});
     inv.submissions.push_back(std::move(s));
   }
 }
@@ -432,16 +415,13 @@ void findCanvas(const fs::path& input, const fs::path& exclude, Inventory& inv) 
     for (const File& f : files) {
       late = late || f.name.late;
       const File*& kept = latest[f.name.original];
-      if (kept == nullptr || later(f, *kept)) {
-        if (kept != nullptr) {
-          s.notes.push_back(kept->path.filename().string() + " replaced by the later upload " +
-                            f.path.filename().string());
-        }
-        kept = &f;
-      } else {
-        s.notes.push_back(f.path.filename().string() + " replaced by the later upload " +
-                          kept->path.filename().string());
+      const bool newer = kept == nullptr || later(f, *kept);
+      if (kept != nullptr) {
+        const File &older = newer ? *kept : f, &upload = newer ? f : *kept;
+        s.notes.push_back(older.path.filename().string() + " replaced by the later upload " +
+                          upload.path.filename().string());
       }
+      if (newer) kept = &f;
     }
     for (const auto& [original, f] : latest) s.files.emplace_back(f->path, original);
     if (late) s.notes.push_back("submitted late");
@@ -459,11 +439,9 @@ Layout detectLayout(const fs::path& input, const fs::path& exclude) {
     std::error_code ec;
     const fs::file_status st = e.symlink_status(ec);
     const std::string name = e.path().filename().string();
-    if (name.empty() || name[0] == '.' || name == "__MACOSX" || sameFile(e.path(), exclude)) {
-      continue;
-    }
+    if (isSystemName(name) || sameFile(e.path(), exclude)) continue;
     if (fs::is_directory(st)) return Layout::Plain;  // Canvas downloads are flat
-    if (fs::is_regular_file(st) && parseCanvasName(e.path().filename().string())) {
+    if (fs::is_regular_file(st) && parseCanvasName(name)) {
       ++canvas;
     } else {
       ++other;
@@ -480,17 +458,9 @@ Inventory findSubmissions(const fs::path& input, Layout layout, const fs::path& 
     inv.error = input.string() + " is not a folder";
     return inv;
   }
-  switch (layout) {
-    case Layout::Plain:
-      findPlain(input, exclude, inv);
-      break;
-    case Layout::Gradescope:
-      findGradescope(input, exclude, inv);
-      break;
-    case Layout::Canvas:
-      findCanvas(input, exclude, inv);
-      break;
-  }
+  if (layout == Layout::Plain) findPlain(input, exclude, inv);
+  if (layout == Layout::Gradescope) findGradescope(input, exclude, inv);
+  if (layout == Layout::Canvas) findCanvas(input, exclude, inv);
   assignKeys(inv.submissions, inv.notes);
   return inv;
 }

@@ -23,16 +23,12 @@ class Progress {
       : total_(total), done_(done), toRun_(toRun), jobs_(jobs), tty_(tty) {}
 
   void finished(const Submission& s, const Outcome& o);
-
-  void tick();
-
+  void tick();  ///< redraws the bar now and then
   void clear();
 
  private:
   int width() const { return static_cast<int>(std::to_string(total_).size()); }
-
   std::string counters() const;
-
   void draw();
 
   int total_, done_, toRun_, jobs_;
