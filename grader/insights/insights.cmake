@@ -1,11 +1,8 @@
-# The class's picture after a batch (insights/): insights.html from the results.json files of a
-# batch or a Gradescope export, and code similarity with Debian's similarity-tester (sim_c++,
-# found at run time: without it the page says so). a6_batch writes the page after each batch;
-# a6_insights writes it for a folder graded elsewhere (Gradescope's "Export Submissions").
+# The class's picture (insights/): insights.html, written by a6_batch after each batch and by
+# a6_insights for a Gradescope export; similarity with sim_c++, found at run time.
 add_library(a6_insights_core STATIC ${CMAKE_CURRENT_SOURCE_DIR}/insights/insights.cpp
                                     ${CMAKE_CURRENT_SOURCE_DIR}/insights/page.cpp
-                                    ${CMAKE_CURRENT_SOURCE_DIR}/insights/similarity.cpp
-                                    ${CMAKE_CURRENT_SOURCE_DIR}/insights/stage.cpp)
+                                    ${CMAKE_CURRENT_SOURCE_DIR}/insights/similarity.cpp)
 target_include_directories(a6_insights_core PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_insights_core PUBLIC a6_batch_core a6_report a6_process a6_intake
                       PRIVATE nlohmann_json::nlohmann_json)

@@ -18,8 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-// A results.json is a few hundred kB at most: anything larger is not read (and cannot be
-// parsed, so it becomes a problem, not a grade).
+// A results.json is a few hundred kB: anything larger is not read (a problem, not a grade).
 constexpr std::size_t kLargestResults = 16u << 20;
 
 std::string readAll(const fs::path& file) {
@@ -37,8 +36,7 @@ SubmissionResult ungraded(const std::string& key, const std::string& problem) {
   return s;
 }
 
-// The member `key` of `j` when it has that type, else the fallback: results.json is the
-// grader's, but a Gradescope export or a damaged file can hold anything.
+// Members read only when of their type: an export or a damaged file can hold anything.
 std::string stringAt(const Json& j, const char* key) {
   return j.is_object() && j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : "";
 }
@@ -137,16 +135,14 @@ std::string markerProblem(const fs::path& marker) {
   return reason.empty() ? status : status + ": " + reason;
 }
 
-// The submission folder's results.json: a plain file (not a link), at its top only. Below it
-// lie the student's own files, and a student can submit a file of that name anywhere there.
+// The folder's results.json: a plain file at its top only (below lie the student's files).
 fs::path findResults(const fs::path& dir) {
   std::error_code ec;
   const fs::path file = dir / "results.json";
   return fs::is_regular_file(fs::symlink_status(file, ec)) ? file : fs::path();
 }
 
-// The folder holding a Gradescope export's submission_metadata.yml: `folder` or its only
-// sub-folder; empty when neither.
+// The folder holding submission_metadata.yml: `folder` or its only sub-folder; else empty.
 fs::path gradescopeRoot(const fs::path& folder) {
   std::error_code ec;
   if (fs::is_regular_file(folder / "submission_metadata.yml", ec)) return folder;
@@ -322,9 +318,8 @@ void finishItems(std::map<std::string, ItemStats>& items, ClassInsights& c) {
   });
 }
 
-// What each check cost: a grading's points lost on an item (what the item is worth, or the most
-// the class got where results.json does not say, less its score), shared evenly among the
-// item's checks that the grading ran and failed (each named once).
+// What each check cost: a grading's points lost on an item (its worth, or else the most the
+// class got, less its score), shared evenly among the item's checks it ran and failed.
 void costChecks(const SubmissionResult& s, const std::map<std::string, ItemStats>& items,
                 std::map<std::string, CheckStats>& checks) {
   for (const ItemResult& item : s.items) {

@@ -1,11 +1,6 @@
-// The class's picture after a batch (insights.html): what a6_grade's results.json files say,
-// summed over the submissions. Read from a6_batch's output folder (OUT/<student>/results.json,
-// each beside its report.html) or from Gradescope's "Export Submissions" (one
-// submission_<id>/ folder each, with the results.json the autograder wrote when the export
-// holds it). See page.cpp for the page and similarity.h for the code comparison.
-//
-// Takes: results.json texts (any of them may be missing, broken or hostile: a submission's own
-// text is in its messages). Gives: plain data, then one self-contained HTML page.
+// The class's picture after a batch (insights.html): the results.json files of a6_batch's output
+// folder or of a Gradescope export, summed over the submissions. Any of them may be missing,
+// broken or hostile (a submission's own text is in its messages). The page is page.h's.
 #pragma once
 
 #include <filesystem>
@@ -55,10 +50,9 @@ struct SubmissionResult {
 /// The results.json text of one submission, read: anything unreadable becomes `problem`.
 SubmissionResult readResults(const std::string& key, const std::string& resultsJson);
 
-/// Every submission of a folder: a6_batch's output (a folder per student holding results.json,
-/// or batch.json when the grading failed) or a Gradescope export (submission_metadata.yml and
-/// submission_<id>/ folders; a folder without results.json is listed with that problem).
-/// `notes` gets what was left out and why.
+/// Every submission of a6_batch's output (results.json, or batch.json when the grading failed)
+/// or of a Gradescope export (one without results.json has that problem); `notes`: what was
+/// left out and why.
 std::vector<SubmissionResult> readFolder(const std::filesystem::path& folder,
                                          std::vector<std::string>& notes);
 
@@ -82,9 +76,8 @@ struct CheckStats {
   std::string name;
   int task = 0;  ///< from "Task<N>" or "GoldenTask<N>" in its name; 0 when none
   int ran = 0, passed = 0;
-  /// Points the class lost on it: each grading's points lost on an item (its worth less its
-  /// score), shared evenly among the item's checks it failed. Known (costed) only when every
-  /// grading that ran it named its item's checks (results.json written before did not).
+  /// Points the class lost on it: each grading's points lost on an item, shared among the item's
+  /// checks it failed. Known (costed) only when every grading that ran it named them.
   double lost = 0;
   int costedRuns = 0;
   bool costed() const { return ran > 0 && costedRuns == ran; }

@@ -2,12 +2,8 @@
 //
 //   a6_insights FOLDER [--out FILE] [--similarity] [--starter DIR] [--threshold P]
 //
-// FOLDER: a6_batch's output folder (a6_batch writes FOLDER/insights.html itself), or Gradescope's
-// "Export Submissions", unzipped (submission_metadata.yml and a submission_<id>/ folder each,
-// with the results.json the autograder wrote when the export holds it). --out: the page
-// (default FOLDER/insights.html). --similarity (a Gradescope export only: it holds the
-// submitted files): compare the submissions' task files with sim_c++.
-//
+// FOLDER: a6_batch's output, or Gradescope's "Export Submissions", unzipped (only an export holds
+// the submitted files that --similarity compares).
 // Exit status: 0 page written; 1 it could not be written; 2 a bad command line or FOLDER.
 #include <CLI/CLI.hpp>
 #include <cstdio>

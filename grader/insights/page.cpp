@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <numeric>
 #include <set>
 #include <sstream>
 
@@ -113,16 +114,12 @@ std::string histogramSvg(const std::vector<double>& values, double max, int bins
   svg << "<text x=\"2\" y=\"12\">" << highest << "</text><text x=\"2\" y=\"" << h + 10
       << "\">0</text>";
   for (int i = 0; i < bins; ++i) {
-    const int bar = count[static_cast<std::size_t>(i)] * h / highest;
-    const int x = left + i * w;
+    const int n = count[static_cast<std::size_t>(i)], bar = n * h / highest, x = left + i * w;
     svg << "<rect x=\"" << x + 1 << "\" y=\"" << 10 + h - bar << "\" width=\"" << w - 2
         << "\" height=\"" << bar << "\" fill=\"#5b8def\"><title>" << fmt(max * i / bins, 1)
-        << " to " << fmt(max * (i + 1) / bins, 1) << ": " << count[static_cast<std::size_t>(i)]
-        << "</title></rect>";
-    if (count[static_cast<std::size_t>(i)] > 0) {
-      svg << "<text x=\"" << x + w / 2 - 3 << "\" y=\"" << 8 + h - bar << "\">"
-          << count[static_cast<std::size_t>(i)] << "</text>";
-    }
+        << " to " << fmt(max * (i + 1) / bins, 1) << ": " << n << "</title></rect>";
+    if (n > 0)
+      svg << "<text x=\"" << x + w / 2 - 3 << "\" y=\"" << 8 + h - bar << "\">" << n << "</text>";
     if (i % 2 == 0) {
       svg << "<text x=\"" << x << "\" y=\"" << h + 24 << "\">" << fmt(max * i / bins, 0)
           << "</text>";
@@ -151,8 +148,7 @@ std::pair<std::vector<double>, double> taskPoints(const ClassInsights& c, int ta
   }
   std::vector<double> points;
   for (const SubmissionResult& s : c.submissions) {
-    if (!s.total) continue;
-    points.push_back(regularPoints(s, task));
+    if (s.total) points.push_back(regularPoints(s, task));
   }
   return {points, worth};
 }
@@ -163,8 +159,7 @@ void distributions(std::ostringstream& out, const ClassInsights& c) {
   for (const SubmissionResult& s : c.submissions) {
     if (!s.total) continue;
     totals.push_back(*s.total);
-    max = std::max(max, s.max + s.extraCredit);
-    max = std::max(max, *s.total);
+    max = std::max({max, s.max + s.extraCredit, *s.total});
   }
   out << "<h2 id=\"distribution\">Distribution of totals</h2>\n<div class=\"plots\"><figure>"
       << histogramSvg(totals, max, 20) << "<figcaption>total (extra credit included), "
@@ -295,9 +290,7 @@ void submissionsTable(std::ostringstream& out, const ClassInsights& c) {
     } else {
       out << "<td data-v=\"-1\">" << htmlEscape(s.problem) << "</td>";
     }
-    for (const auto& [task, _] : tasks) {
-      out << numCell(regularPoints(s, task));
-    }
+    for (const auto& [task, _] : tasks) out << numCell(regularPoints(s, task));
     std::set<std::string> named;
     std::string mistakes;
     for (const ItemResult& item : s.items) {
@@ -356,21 +349,17 @@ void header(std::ostringstream& out, const ClassInsights& c, const PageInput& in
   }
   if (!totals.empty()) {
     std::sort(totals.begin(), totals.end());
-    double sum = 0;
-    for (const double t : totals) sum += t;
+    const double sum = std::accumulate(totals.begin(), totals.end(), 0.0);
     out << " Mean " << fmt(sum / totals.size()) << ", median "
         << fmt((totals[(totals.size() - 1) / 2] + totals[totals.size() / 2]) / 2) << ".";
   }
   out << "</p>\n";
   for (const std::string& n : in.notes) out << "<p class=\"note\">" << htmlEscape(n) << "</p>\n";
-  out << "<p><a href=\"#distribution\">distribution</a> &middot; <a href=\"#items\">rubric "
-         "items</a> "
-         "&middot; <a href=\"#look\">checks to look at</a> &middot; <a "
-         "href=\"#mistakes\">mistakes</a> "
-         "&middot; <a href=\"#incidents\">incidents</a> &middot; <a "
-         "href=\"#similarity\">similarity</a> "
-         "&middot; <a href=\"#submissions\">submissions</a> &middot; <a "
-         "href=\"#checks\">checks</a></p>\n";
+  out << "<p><a href=\"#distribution\">distribution</a> &middot; <a href=\"#items\">rubric items"
+         "</a> &middot; <a href=\"#look\">checks to look at</a> &middot; <a href=\"#mistakes\">"
+         "mistakes</a> &middot; <a href=\"#incidents\">incidents</a> &middot; <a href=\"#similarity"
+         "\">similarity</a> &middot; <a href=\"#submissions\">submissions</a> &middot; <a href=\""
+         "#checks\">checks</a></p>\n";
 }
 
 }  // namespace

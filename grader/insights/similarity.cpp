@@ -1,12 +1,8 @@
-// Code similarity with sim_c++. See similarity.h.
-//
-// Steps, for each task file: (1) each submission's copy of it, with the lines the starter file
-// has blanked (line numbers kept), into work/<task file>/<n>.cpp; an untouched starter file is
-// left out; (2) sim_c++ -e -s -n: every run of at least minimumRun tokens that two files share,
-// with its lines in each; (3) per file and line, the other files that share it; a line shared
-// with more than kCommonShare of the others is common; (4) per pair, the lines of each file that
-// the other shares and that are not common, over that file's lines that are not common (its own
-// code); the larger of the two shares decides (one file may hold all of the other and more).
+// Code similarity with sim_c++. See similarity.h. Per task file: (1) each submission's copy, the
+// starter's lines blanked, into work/<task file>/<n>.cpp; (2) sim_c++ -e -s -n: the runs two files
+// share; (3) per file and line, the other files sharing it (more than kCommonShare: common);
+// (4) per pair, the share of each file's own code the other has; the larger decides (one file
+// may hold all of the other and more).
 #include "insights/similarity.h"
 
 #include <fcntl.h>
@@ -26,6 +22,7 @@
 
 #include "common/read_all.h"
 #include "harness/task_files.h"
+#include "intake/intake.h"
 #include "sandbox/process.h"
 
 namespace a6::grader::insights {
@@ -58,7 +55,7 @@ bool isCode(const std::string& line) {
 }
 
 // The tool's wait status; none when it ran out of time, `stop` asked, or it vanished (then its
-// pid may be another process's: not to be killed).
+// pid is not to be killed).
 std::optional<int> waitUnlessStopped(pid_t pid, const StopAsked& stop, bool& vanished) {
   const auto start = std::chrono::steady_clock::now();
   for (;;) {
@@ -67,8 +64,7 @@ std::optional<int> waitUnlessStopped(pid_t pid, const StopAsked& stop, bool& van
   }
 }
 
-// Runs sim_c++ with `args`, what it prints into `out`; true when it ran to the end in time and
-// was not stopped.
+// Runs sim_c++ with `args` into `out`; true when it ended in time and was not stopped.
 bool runTool(const std::vector<std::string>& args, const fs::path& out, const StopAsked& stop) {
   std::vector<char*> argv;
   std::vector<std::string> all = {kTool};
@@ -286,6 +282,25 @@ void stoppedAt(const std::string& from, SimilarityReport& report) {
 }
 
 }  // namespace
+
+std::vector<SubmissionFiles> stageSubmissions(
+    const std::vector<std::pair<std::string, fs::path>>& keyAndPath, const fs::path& work,
+    std::vector<std::string>& notes) {
+  std::error_code ec;
+  fs::remove_all(work, ec);
+  std::vector<SubmissionFiles> staged;
+  for (std::size_t i = 0; i < keyAndPath.size(); ++i) {
+    const auto& [key, path] = keyAndPath[i];
+    const fs::path dest = work / std::to_string(i);
+    const Intake intake = takeSubmission(path, dest);
+    if (!intake.ok()) {
+      notes.push_back(key + ": not compared: " + intake.error);
+      continue;
+    }
+    if (!intake.files.empty()) staged.push_back({key, dest});
+  }
+  return staged;
+}
 
 SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissions,
                                     const fs::path& starter, const fs::path& work,

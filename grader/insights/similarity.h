@@ -1,16 +1,11 @@
-// Code similarity between the submissions of a batch, task file by task file, with Debian's
-// similarity-tester (sim_c++: Dick Grune's token-run comparator, packaged on every platform we
-// support, run here on this machine: no code leaves it).
+// Code similarity between a batch's submissions, task file by task file, with Debian's
+// similarity-tester (sim_c++, run on this machine: no code leaves it).
 //
-// Why sim_c++: it compares C++ token by token, blind to layout, comments and identifiers (a
-// renamed-variable copy is the same text to it), and reports the runs two files share with
-// their line numbers, which the page shows side by side. Dolos (npm) does the same with
-// tree-sitter but is no Debian package and needs Node.js.
+// Why sim_c++: it compares C++ token by token, blind to layout, comments and identifiers, and
+// gives the shared runs' lines, shown side by side. Dolos does the same but needs Node.js.
 //
-// What is discounted: a submission's file is compared only where it differs from the starter
-// (lines of the starter file are blanked first), and a shared run is evidence only if it is
-// rare in the class: a run that more than kCommonShare of the submissions share (the formulas
-// every correct solution writes the same way) is left out. A pair is listed when the runs left
+// Discounted: the starter's lines (blanked first), and runs that more than kCommonShare of the
+// class share (the formulas every solution writes alike). A pair is listed when the rare runs
 // cover at least `threshold` percent of either file's own code.
 #pragma once
 
@@ -46,16 +41,14 @@ struct SimilarityReport {
   bool stopped = false;            ///< asked to stop before the last task file was compared
 };
 
-/// A submission's files for the comparison: its key and the folder (or staged copy) holding
-/// its task files.
+/// A submission's key and the folder holding its task files.
 struct SubmissionFiles {
   std::string key;
   std::filesystem::path folder;
 };
 
 /// The task files of each submission (a folder or an archive, read by the grader's intake with
-/// its limits: nothing is extracted) copied into work/<n>/, ready for compareSubmissions; a
-/// submission that cannot be read is a note.
+/// its limits) copied into work/<n>/; one that cannot be read is a note.
 std::vector<SubmissionFiles> stageSubmissions(
     const std::vector<std::pair<std::string, std::filesystem::path>>& keyAndPath,
     const std::filesystem::path& work, std::vector<std::string>& notes);
@@ -66,10 +59,9 @@ inline constexpr double kCommonShare = 0.34;
 /// Asked often while the comparison runs: true to stop it (a6_batch's Ctrl-C).
 using StopAsked = std::function<bool()>;
 
-/// Compares every pair of submissions task file by task file. `starter`: the folder of the
-/// starter files; `work`: a scratch folder (emptied); `stop` (may be empty) ends it early, with
-/// a note saying which task files were not compared. Never throws; a missing tool or an
-/// unreadable file is a note.
+/// Compares every pair of submissions task file by task file. `work`: a scratch folder
+/// (emptied); `stop` (may be empty) ends it early, with a note of what was not compared. Never
+/// throws: a missing tool or an unreadable file is a note.
 SimilarityReport compareSubmissions(const std::vector<SubmissionFiles>& submissions,
                                     const std::filesystem::path& starter,
                                     const std::filesystem::path& work, const StopAsked& stop = {},
