@@ -1,7 +1,5 @@
-# Grading a folder of submissions (batch/: a6_batch, batch_main.cpp). It runs
-# a6_grade once per submission as a child process, so it links none of the grading itself: the
-# layouts (layouts.cpp), the outcomes, gradebook and markers (batch.cpp): a6_batch_core; and
-# a6_report for its atomic writes.
+# Grading a folder of submissions (batch/: a6_batch). It runs a6_grade per submission, so it
+# links none of the grading: a6_batch_core (layouts, outcomes, gradebook), a6_report's writes.
 find_package(CLI11 REQUIRED)
 
 add_library(a6_batch_core STATIC ${CMAKE_CURRENT_SOURCE_DIR}/batch/layouts.cpp

@@ -32,7 +32,6 @@
 // Reaping names each pid, never waitpid(-1), which could reap an a6_grade before the loop that
 // waits for it (that batch would wait forever). One that vanishes is a grader error.
 #include <fcntl.h>
-#include <sys/file.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -44,7 +43,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <iomanip>
 #include <map>
 #include <optional>
@@ -186,7 +184,6 @@ class Batch {
     writeGradebook();
   }
 
-  // Reaps our a6_grade children that ended, each by its pid.
   void reapEnded(Progress& progress) {
     for (std::size_t k = 0; k < running_.size();) {
       bool vanished = false;
@@ -461,7 +458,6 @@ class Batch {
     return lines;
   }
 
-  // One line per outcome status with its count, and the skipped ones.
   void countLines(std::ostringstream& out) const {
     std::map<std::string, int> count;  // over every outcome, whichever run graded it
     for (const auto& o : outcomes_) {
@@ -480,7 +476,6 @@ class Batch {
         << "\n";
   }
 
-  // The batch's wall time, and the mean and longest grading of this run.
   void timeLine(std::ostringstream& out, double wall, int jobs) const {
     out << "  batch wall time " << duration(wall) << " (" << oneDecimal(wall) << " s) with -j "
         << jobs;

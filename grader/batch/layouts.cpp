@@ -9,12 +9,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <fstream>
-#include <iomanip>
-#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <system_error>
@@ -28,7 +24,6 @@ namespace a6::grader::batch {
 namespace {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
 
 // A file larger than this is fingerprinted by its size and modification time, not its bytes.
 constexpr std::uintmax_t kHashContentLimit = 64u << 20;
@@ -255,12 +250,9 @@ fs::path gradescopeRoot(const fs::path& input, const fs::path& exclude) {
 std::vector<fs::directory_entry> sortedEntries(const fs::path& dir, std::string& error) {
   std::vector<fs::directory_entry> entries;
   std::error_code ec;
-  fs::directory_iterator it(dir, ec);
-  if (ec) {
-    error = "cannot read " + dir.string() + ": " + ec.message();
-    return entries;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    entries.push_back(*it);
   }
-  for (fs::directory_iterator end; !ec && it != end; it.increment(ec)) entries.push_back(*it);
   if (ec) error = "cannot read " + dir.string() + ": " + ec.message();
   std::sort(entries.begin(), entries.end(),
             [](const fs::directory_entry& a, const fs::directory_entry& b) {

@@ -76,8 +76,6 @@ BuildWords buildWords(const TaskBuild& t) {
   return {"?", "?"};
 }
 
-std::string describeBuild(const TaskBuild& t) { return buildWords(t).sentence; }
-
 std::string itemTitle(const ScoredItem& s) {
   const int total = s.passed + s.failed;
   return s.item.name + " (" + std::to_string(s.passed) + "/" + std::to_string(total) +
@@ -130,7 +128,7 @@ std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
     out += hint + "\n\n";
   }
   if (const TaskBuild* t = buildOf(report, s.item.task); t != nullptr && t->usesStarter()) {
-    out += t->file + " " + describeBuild(*t) + ".\n";
+    out += t->file + " " + buildWords(*t).sentence + ".\n";
     if (!t->messages.empty()) out += "Compiler messages:\n" + cap(t->messages, kCompilerCap) + "\n";
     out += "\n";
   }
@@ -196,7 +194,7 @@ std::string overallOutput(const GradeReport& report) {
   if (!report.build.tasks.empty()) {
     out << "Build:\n";
     for (const TaskBuild& t : report.build.tasks) {
-      out << "  Task " << taskOf(t.file) << " " << t.file << ": " << describeBuild(t) << "\n";
+      out << "  Task " << taskOf(t.file) << " " << t.file << ": " << buildWords(t).sentence << "\n";
     }
   }
   if (!report.build.error.empty()) out << "Build failed: " << report.build.error << "\n";
@@ -506,7 +504,7 @@ void htmlSubmission(std::ostringstream& out, const GradeReport& report) {
         << "</td><td>"
         << (t == nullptr ? std::string("not built")
                          : "<span class=\"" + std::string(t->usesStarter() ? "fail" : "pass") +
-                               "\">" + htmlEscape(describeBuild(*t)) + "</span>")
+                               "\">" + htmlEscape(buildWords(*t).sentence) + "</span>")
         << "</td></tr>\n";
   }
   out << "</table>\n";
@@ -610,7 +608,8 @@ std::string terminalSummary(const GradeReport& report, bool color) {
     totalLine("shown to students before the due date", v.score, v.max, v.extraCredit);
   }
   for (const TaskBuild& t : report.build.tasks) {
-    if (t.usesStarter()) out << "  " << red << t.file << ": " << describeBuild(t) << reset << "\n";
+    if (t.usesStarter())
+      out << "  " << red << t.file << ": " << buildWords(t).sentence << reset << "\n";
   }
   for (const NamedMistake& m : report.mistakes) {
     out << "  " << red << "task " << m.task << ": " << m.text << reset << "\n";
