@@ -96,8 +96,7 @@ std::string hrefOf(const std::string& path) {
   return out;
 }
 
-}  // namespace
-
+// An SVG bar chart of `values` in `bins` equal bins over [0, max] (the last bin holds max).
 std::string histogramSvg(const std::vector<double>& values, double max, int bins) {
   bins = std::max(bins, 1);
   std::vector<int> count(static_cast<std::size_t>(bins), 0);
@@ -129,27 +128,12 @@ std::string histogramSvg(const std::vector<double>& values, double max, int bins
   return svg.str();
 }
 
-namespace {
-
 // A submission's regular points in task `task` (its extra credit apart, as in the gradebook).
 double regularPoints(const SubmissionResult& s, int task) {
   double sum = 0;
   for (const ItemResult& item : s.items)
     sum += item.task == task && !item.extraCredit ? item.score : 0;
   return sum;
-}
-
-// Each graded submission's regular points in task `task`, and what the task is worth.
-std::pair<std::vector<double>, double> taskPoints(const ClassInsights& c, int task) {
-  double worth = 0;
-  for (const ItemStats& item : c.items) {
-    if (item.task == task && !item.extraCredit) worth += item.points;
-  }
-  std::vector<double> points;
-  for (const SubmissionResult& s : c.submissions) {
-    if (s.total) points.push_back(regularPoints(s, task));
-  }
-  return {points, worth};
 }
 
 void distributions(std::ostringstream& out, const ClassInsights& c) {
@@ -163,12 +147,19 @@ void distributions(std::ostringstream& out, const ClassInsights& c) {
   out << "<h2 id=\"distribution\">Distribution of totals</h2>\n<div class=\"plots\"><figure>"
       << histogramSvg(totals, max, 20) << "<figcaption>total (extra credit included), "
       << totals.size() << " graded</figcaption></figure></div>\n<div class=\"plots\">";
-  std::map<int, bool> tasks;
+  std::set<int> tasks;
   for (const ItemStats& item : c.items) {
-    if (item.task > 0 && !item.extraCredit && item.points > 0) tasks[item.task] = true;
+    if (item.task > 0 && !item.extraCredit && item.points > 0) tasks.insert(item.task);
   }
-  for (const auto& [task, _] : tasks) {
-    const auto [points, worth] = taskPoints(c, task);
+  for (const int task : tasks) {  // each graded submission's regular points, and the task's worth
+    double worth = 0;
+    for (const ItemStats& item : c.items) {
+      if (item.task == task && !item.extraCredit) worth += item.points;
+    }
+    std::vector<double> points;
+    for (const SubmissionResult& s : c.submissions) {
+      if (s.total) points.push_back(regularPoints(s, task));
+    }
     out << "<figure>" << histogramSvg(points, worth, 10) << "<figcaption>task " << task << " (of "
         << fmt(worth) << " points)</figcaption></figure>";
   }
@@ -273,14 +264,14 @@ void incidentsSection(std::ostringstream& out, const ClassInsights& c) {
 }
 
 void submissionsTable(std::ostringstream& out, const ClassInsights& c) {
-  std::map<int, bool> tasks;
+  std::set<int> tasks;
   for (const ItemStats& item : c.items) {
-    if (item.task > 0) tasks[item.task] = true;
+    if (item.task > 0) tasks.insert(item.task);
   }
   out << "<h2 id=\"submissions\">Submissions</h2>\n<p>Each task's regular points (its extra "
          "credit is in the total).</p><table class=\"sortable\"><thead><tr>"
          "<th>submission</th><th>total</th>";
-  for (const auto& [task, _] : tasks) out << "<th>task " << task << "</th>";
+  for (const int task : tasks) out << "<th>task " << task << "</th>";
   out << "<th>mistakes</th><th>report</th></tr></thead><tbody>\n";
   for (const SubmissionResult& s : c.submissions) {
     out << "<tr><td>" << htmlEscape(s.key) << "</td>";
@@ -289,7 +280,7 @@ void submissionsTable(std::ostringstream& out, const ClassInsights& c) {
     } else {
       out << "<td data-v=\"-1\">" << htmlEscape(s.problem) << "</td>";
     }
-    for (const auto& [task, _] : tasks) out << numCell(regularPoints(s, task));
+    for (const int task : tasks) out << numCell(regularPoints(s, task));
     std::set<std::string> named;
     std::string mistakes;
     for (const ItemResult& item : s.items) {

@@ -26,7 +26,4 @@ std::string insightsHtml(const ClassInsights& insights, const PageInput& input);
 std::string writeInsights(const std::filesystem::path& folder, const std::filesystem::path& page,
                           PageInput input);
 
-/// An SVG bar chart of `values` in `bins` equal bins over [0, max] (the last bin holds max).
-std::string histogramSvg(const std::vector<double>& values, double max, int bins);
-
 }  // namespace a6::grader::insights

@@ -64,11 +64,10 @@ std::optional<int> waitUnlessStopped(pid_t pid, const StopAsked& stop, bool& van
 }
 
 // Runs sim_c++ with `args` into `out`; true when it ended in time and was not stopped.
-bool runTool(const std::vector<std::string>& args, const fs::path& out, const StopAsked& stop) {
+bool runTool(std::vector<std::string> args, const fs::path& out, const StopAsked& stop) {
+  args.insert(args.begin(), kTool);
   std::vector<char*> argv;
-  std::vector<std::string> all = {kTool};
-  all.insert(all.end(), args.begin(), args.end());
-  for (std::string& a : all) argv.push_back(a.data());
+  for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   const pid_t pid = fork();
   if (pid == 0) {

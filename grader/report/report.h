@@ -1,6 +1,5 @@
-// What a grading run produced, and the three ways it is written: Gradescope's results.json, a
-// self-contained HTML report, and a summary on the terminal. Its points come from the scoring
-// stage (scoring/score.h).
+// What a grading run produced, written three ways: Gradescope's results.json, a self-contained
+// HTML report and a terminal summary. Its points come from scoring/score.h.
 #pragma once
 
 #include <cstdint>
