@@ -136,10 +136,9 @@ std::optional<Outcome> outcomeOfMarker(const std::string& markerText,
 /// space (quotes doubled).
 std::string csvField(const std::string& text);
 
-/// gradebook.csv: the header `student,email,sid,total,max,task1..task7,extra_credit,status,
-/// seconds,mistakes`, then one row per person of each submission that has an outcome, in key
-/// order; `mistakes` lists the ids of the known mistakes named, separated by spaces.
-/// Points are blank for a submission without a grade (grader error, timed out, crashed).
+/// gradebook.csv: `student,email,sid,total,max,task1..task7,extra_credit,status,seconds,mistakes`
+/// (the ids named, space-separated), a row per person of each submission with an outcome, in key
+/// order. Points are blank for a submission without a grade (grader error, timed out, crashed).
 std::string gradebookCsv(const std::vector<std::pair<const Submission*, const Outcome*>>& graded);
 
 /// How many submissions each known mistake was named for, most often first (ties by id), one

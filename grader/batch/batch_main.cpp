@@ -57,7 +57,8 @@
 #include "batch/progress.h"
 #include "common/read_all.h"
 #include "insights/page.h"
-#include "report/report.h"  // writeFileAtomically
+#include "report/replay_html.h"  // fixed
+#include "report/report.h"       // writeFileAtomically
 #include "sandbox/process.h"
 
 namespace fs = std::filesystem;
@@ -199,8 +200,8 @@ class Batch {
     }
   }
 
-  // A grading that ended in a grader error (the machine failed it: a probe that could not
-  // start, the grader killed) is queued once more before the run ends; true when it was.
+  // A grader error (the machine failed it: a probe that could not start, the grader killed) is
+  // graded once more before the run ends; true when it was queued.
   bool gradedAgain(std::size_t i) {
     if (outcomes_[i]->status != kGraderError || regraded_.count(i) > 0) return false;
     regraded_.insert(i);
@@ -330,8 +331,7 @@ class Batch {
     _exit(127);
   }
 
-  // a6_grade ended (status from waitpid; none when it vanished): its outcome, the marker, its
-  // work folder.
+  // a6_grade ended (status from waitpid; none when it vanished): its outcome, marker, work folder.
   void finish(const Running& r, std::optional<int> waited, bool vanished) {
     const int status = waited.value_or(0);
     const Submission& s = inv_.submissions[r.index];
@@ -342,7 +342,7 @@ class Batch {
       o.reason = "a6_grade vanished: something else reaped it" + seeLog;
     } else if (r.timedOut) {
       o.status = kTimedOut;
-      o.reason = "stopped after " + oneDecimal(o_.timeout) + " s (--timeout)";
+      o.reason = "stopped after " + fixed(o_.timeout, 1) + " s (--timeout)";
     } else if (WIFSIGNALED(status)) {
       o.status = kCrashed;
       o.reason = std::string("a6_grade was killed by ") + strsignal(WTERMSIG(status)) + seeLog;
@@ -379,8 +379,7 @@ class Batch {
     ranSeconds_.push_back(o.seconds);
   }
 
-  // OUT/insights.html from every results.json in OUT (this run's and earlier runs'), with the
-  // similarity of the submissions' task files when asked for.
+  // OUT/insights.html from every results.json in OUT (earlier runs' too); the similarity if asked.
   void writeInsightsPage() {
     insights::PageInput input;
     insights::SimilarityReport report;
@@ -477,7 +476,7 @@ class Batch {
   }
 
   void timeLine(std::ostringstream& out, double wall, int jobs) const {
-    out << "  batch wall time " << duration(wall) << " (" << oneDecimal(wall) << " s) with -j "
+    out << "  batch wall time " << duration(wall) << " (" << fixed(wall, 1) << " s) with -j "
         << jobs;
     if (!ranSeconds_.empty()) {
       double sum = 0, max = 0;
@@ -485,8 +484,8 @@ class Batch {
         sum += s;
         max = std::max(max, s);
       }
-      out << "; per submission: mean " << oneDecimal(sum / static_cast<double>(ranSeconds_.size()))
-          << " s, max " << oneDecimal(max) << " s (" << ranSeconds_.size()
+      out << "; per submission: mean " << fixed(sum / static_cast<double>(ranSeconds_.size()), 1)
+          << " s, max " << fixed(max, 1) << " s (" << ranSeconds_.size()
           << " gradings in this run)";
     }
     out << "\n";
@@ -561,8 +560,7 @@ class Batch {
   std::set<std::size_t> regraded_;  // queued again after a grader error (once each)
 };
 
-// Signals only set the flag the loop reads; whatever a dead a6_grade's processes leave is
-// re-parented here, to be killed.
+// Signals only set the flag the loop reads; a dead a6_grade's strays are re-parented here.
 void catchSignals() {
   std::signal(SIGPIPE, SIG_IGN);
   struct sigaction action {};

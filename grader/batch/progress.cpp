@@ -5,18 +5,13 @@
 #include <cstdio>
 #include <sstream>
 
+#include "report/replay_html.h"  // fixed
 #include "sandbox/process.h"
 
 namespace a6::grader::batch {
 
 using Clock = std::chrono::steady_clock;
 using process::secondsSince;
-
-std::string oneDecimal(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", x);
-  return buf;
-}
 
 std::string points(const Outcome& o) {
   if (!o.total) return "";
@@ -38,7 +33,7 @@ void Progress::finished(const Submission& s, const Outcome& o) {
   if (!hasGrade(o)) ++failed_;
   std::string line = s.key + ": " + o.status;
   if (o.total) line += ", " + points(o);
-  line += " (" + oneDecimal(o.seconds) + " s)";
+  line += " (" + fixed(o.seconds, 1) + " s)";
   if (!o.reason.empty() && o.status != kGraded) line += ": " + o.reason;
   if (tty_) {
     // Problems scroll above the bar; the rest only moves the bar.

@@ -9,8 +9,6 @@
 
 namespace a6::grader::batch {
 
-/// x with one decimal: "12.3".
-std::string oneDecimal(double x);
 /// An outcome's points: "87/100 +3", or "" without a total.
 std::string points(const Outcome& o);
 /// An outcome that stands (a re-run skips it): points, even 0 for a submission with nothing to

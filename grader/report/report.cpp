@@ -117,9 +117,8 @@ std::string firstHint(const ScoredItem& s) {
   return "";
 }
 
-// The text Gradescope shows under an item: the known mistake its answers match, or else the
-// first failed check's hint; why the task used the starter; then each failing test with its
-// message (the numbers, then the hint), and the precision note.
+// The text Gradescope shows under an item: the known mistake, or else the first hint; why the
+// task used the starter; each failing test with its message; the precision note.
 std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
   std::string out;
   if (const NamedMistake* m = mistakeOf(report, s)) {
