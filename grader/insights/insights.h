@@ -30,7 +30,6 @@ struct ItemResult {
 /// Counts of what went wrong while the code ran (results.json's extra_data.incidents).
 struct Incidents {
   int crashes = 0, timeouts = 0, startFailures = 0;
-  int total() const { return crashes + timeouts + startFailures; }
 };
 
 /// One submission: its results, or why there are none.
