@@ -227,11 +227,7 @@ std::string mimeOf(const std::filesystem::path& file) {
   return "image/png";
 }
 
-}  // namespace
-
 // results.json ---------------------------------------------------------------------------------
-
-namespace {
 
 // One rubric item as a Gradescope test.
 Json itemJson(const GradeReport& report, const ScoredItem& s) {
