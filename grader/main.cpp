@@ -1,6 +1,7 @@
 // a6_grade: grades one submission (grader/DESIGN.md; its options: a6_grade --help). This file
 // only reads the command line; the stages (grading/grading.cpp) write DIR/results.json
-// (Gradescope), DIR/report.html and a summary on stdout.
+// (Gradescope), DIR/report.html and a summary on stdout. Student code never runs in this process:
+// the suite's a6::test::student() is the probe.
 //
 // Exit status: 0 when grading completed, whatever the score (a submission that does not build
 // gets its zero with the reasons in the report); 1 when the grader itself failed (missing kit,

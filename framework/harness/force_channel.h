@@ -43,7 +43,8 @@ bool available(int requestFd = kRequestFd, int answerFd = kAnswerFd);
 
 /// The grader's side: answers requests read from `requestFd` with `models` on `answerFd` until
 /// the requests end, one is malformed, or `stopFd` becomes readable (or is closed). Never throws.
-/// Returns how many were answered; `answered`, when given, counts them as they go.
+/// Returns how many were answered; `answered`, when given, counts them as they go (for the
+/// grader's time allowance).
 std::size_t serve(int requestFd, int answerFd, int stopFd, const ForceModel& models,
                   std::atomic<std::size_t>* answered = nullptr);
 

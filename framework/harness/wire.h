@@ -8,9 +8,11 @@
 // student code must reach the grader as NaN). A finite double is a number (-0.0 keeps its sign);
 // "inf", "-inf", "nan" (the positive quiet NaN), "-nan" (0.0/0.0 on x86) and
 // "nan:0x7ff0000000000001" (any other NaN, its bits) are strings. Vectors are [x, y], structures
-// objects keyed by their C++ field names, enums lower-case strings. Text that is not UTF-8 is
-// decoded with U+FFFD for the bad bytes, never refused. Framing: a 4-byte little-endian length,
-// then that many bytes; a length above kMaxFrameBytes is garbage, never a reason to allocate.
+// objects keyed by their C++ field names, enums lower-case strings. Text that is not UTF-8 (an
+// exception's message, any bytes a probe sends) is decoded with U+FFFD for the bad bytes, never
+// refused; NaN and infinities sent as numbers, which a probe could write, decode as the same
+// values. Framing: a 4-byte little-endian length, then that many bytes; a length above
+// kMaxFrameBytes is garbage, never a reason to allocate.
 #pragma once
 
 #include <cstddef>

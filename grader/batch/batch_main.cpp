@@ -12,22 +12,26 @@
 // Runner notes
 // ------------
 // One a6_grade per submission, in its own process group: a crash or a hang costs that submission
-// only, and --timeout kills the group. Its sandboxed children die with it (PR_SET_PDEATHSIG, which
-// each a6_grade gets too, so even `kill -9` of the batch stops its gradings); what escapes is
-// re-parented to this process (a child subreaper), and any child of ours that is no running
-// a6_grade is such a stray, and is killed.
+// only, and --timeout kills the group. Its sandboxed children run in sessions of their own, so
+// the group does not reach them: they die with it (PR_SET_PDEATHSIG, which each a6_grade gets
+// too, so even `kill -9` of the batch stops its gradings). What escapes is re-parented to
+// a6_grade (a child subreaper) and, once it is gone, to this process (a subreaper too): any child
+// of ours that is not a running a6_grade is such a stray, and is killed.
 //
 // One thread: a loop starts children, reaps them, enforces the time limits and redraws the
 // progress ten times a second. Signals only set a flag that the loop reads.
 //
 // Resume: a submission's marker (batch.json: fingerprint and outcome) is removed before it is
-// graded and written last; a re-run skips a submission whose marker holds the same fingerprint
-// (input files, rubric, seed, time budget) and a grade.
+// graded and written last, once a6_grade has exited and its results were read; a re-run skips a
+// submission whose marker holds the same fingerprint (input files, rubric, seed, time budget)
+// and a grade.
 //
-// Other students' work: every a6_grade gets --hide for the input and the output folder, created
-// in full before the first grading so that each finds them to hide; as root each claims a sandbox
-// user of its own (grader/sandbox/process.h). No compiled object is shared between submissions (it
-// can depend on where it was compiled), only the kit's known objects.
+// Other students' work: every a6_grade gets --hide for the input and the output folder (the
+// sandbox binds its own work folder back), created in full before the first grading so that each
+// finds them to hide. As root each claims a sandbox user of its own (grader/sandbox/process.h),
+// so gradings never share a process limit and what one left running cannot touch the next. No
+// compiled object is shared between submissions (it can depend on where it was compiled), only
+// the kit's known objects.
 //
 // Reaping names each pid, never waitpid(-1), which could reap an a6_grade before the loop that
 // waits for it (that batch would wait forever). One that vanishes is a grader error.
@@ -227,6 +231,7 @@ class Batch {
 
   void failedToStart(std::size_t i, const std::string& why) {
     Outcome o;
+    o.status = kGraderError;
     o.reason = why;
     outcomes_[i] = o;
     ranSeconds_.push_back(o.seconds);

@@ -123,8 +123,15 @@ struct Hash : Fnv1a {
 // ---- names ------------------------------------------------------------------------------------
 
 const char* toString(Layout layout) {
-  static const char* const kNames[] = {"plain", "gradescope", "canvas"};  // in Layout's order
-  return kNames[static_cast<int>(layout)];
+  switch (layout) {
+    case Layout::Plain:
+      return "plain";
+    case Layout::Gradescope:
+      return "gradescope";
+    case Layout::Canvas:
+      return "canvas";
+  }
+  return "?";
 }
 
 std::optional<Layout> layoutNamed(const std::string& name) {
@@ -409,7 +416,8 @@ void findCanvas(const fs::path& input, const fs::path& exclude, Inventory& inv) 
       const File*& kept = latest[f.name.original];
       const bool newer = kept == nullptr || later(f, *kept);
       if (kept != nullptr) {
-        const File &older = newer ? *kept : f, &upload = newer ? f : *kept;
+        const File& older = newer ? *kept : f;
+        const File& upload = newer ? f : *kept;
         s.notes.push_back(older.path.filename().string() + " replaced by the later upload " +
                           upload.path.filename().string());
       }
@@ -450,9 +458,17 @@ Inventory findSubmissions(const fs::path& input, Layout layout, const fs::path& 
     inv.error = input.string() + " is not a folder";
     return inv;
   }
-  if (layout == Layout::Plain) findPlain(input, exclude, inv);
-  if (layout == Layout::Gradescope) findGradescope(input, exclude, inv);
-  if (layout == Layout::Canvas) findCanvas(input, exclude, inv);
+  switch (layout) {
+    case Layout::Plain:
+      findPlain(input, exclude, inv);
+      break;
+    case Layout::Gradescope:
+      findGradescope(input, exclude, inv);
+      break;
+    case Layout::Canvas:
+      findCanvas(input, exclude, inv);
+      break;
+  }
   assignKeys(inv.submissions, inv.notes);
   return inv;
 }

@@ -27,8 +27,10 @@ void BudgetedStudent::startTest(double s) {
   lastFailure_.clear();
   machineFault_ = graderFault_ = false;
   closeCheck();
-  if (probes_) probes_->allowMoreStarts(kStartsPerCheck);
-  if (probes_) probes_->startCheck(s, budgetEnd_);
+  if (probes_) {
+    probes_->allowMoreStarts(kStartsPerCheck);
+    probes_->startCheck(s, budgetEnd_);
+  }
 }
 
 int BudgetedStudent::checksOutOfTime() {

@@ -25,9 +25,9 @@ class BudgetedStudent final : public harness::StudentCode {
  public:
   using Clock = std::chrono::steady_clock;
 
-  /// `code` may be null: every request then fails with `unavailable`. `probes`, when `code` is
-  /// them, get each check's time window and starts, and count the forces answered and the
-  /// requests stopped.
+  /// `code` may be null: every request then fails with `unavailable`. `probes` (null when `code`
+  /// is not the probes) are given each check's time window and starts, and say how many forces
+  /// they were answered and how many requests they stopped.
   BudgetedStudent(harness::StudentCode* code, ProbePair* probes, std::string unavailable)
       : probe_(code), probes_(probes), unavailable_(std::move(unavailable)) {}
 

@@ -134,7 +134,8 @@ std::string markerProblem(const fs::path& marker) {
   return reason.empty() ? status : status + ": " + reason;
 }
 
-// The folder's results.json: a plain file at its top only (below lie the student's files).
+// The folder's results.json: a plain file (not a link) at its top only: a student can submit a
+// file of that name anywhere below.
 fs::path findResults(const fs::path& dir) {
   std::error_code ec;
   const fs::path file = dir / "results.json";

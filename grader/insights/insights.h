@@ -76,7 +76,8 @@ struct CheckStats {
   int task = 0;  ///< from "Task<N>" or "GoldenTask<N>" in its name; 0 when none
   int ran = 0, passed = 0;
   /// Points the class lost on it: each grading's points lost on an item, shared among the item's
-  /// checks it failed. Known (costed) only when every grading that ran it named them.
+  /// checks it failed. Known (costed) only when every grading that ran it named them (a
+  /// results.json written before the checks were named did not).
   double lost = 0;
   int costedRuns = 0;
   bool costed() const { return ran > 0 && costedRuns == ran; }

@@ -112,7 +112,9 @@ std::string histogramSvg(const std::vector<double>& values, double max, int bins
   svg << "<text x=\"2\" y=\"12\">" << highest << "</text><text x=\"2\" y=\"" << h + 10
       << "\">0</text>";
   for (int i = 0; i < bins; ++i) {
-    const int n = count[static_cast<std::size_t>(i)], bar = n * h / highest, x = left + i * w;
+    const int n = count[static_cast<std::size_t>(i)];
+    const int bar = n * h / highest;
+    const int x = left + i * w;
     svg << "<rect x=\"" << x + 1 << "\" y=\"" << 10 + h - bar << "\" width=\"" << w - 2
         << "\" height=\"" << bar << "\" fill=\"#5b8def\"><title>" << fmt(max * i / bins, 1)
         << " to " << fmt(max * (i + 1) / bins, 1) << ": " << n << "</title></rect>";

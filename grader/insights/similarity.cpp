@@ -54,7 +54,7 @@ bool isCode(const std::string& line) {
 }
 
 // The tool's wait status; none when it ran out of time, `stop` asked, or it vanished (then its
-// pid is not to be killed).
+// pid may be another process's by then: not to be killed).
 std::optional<int> waitUnlessStopped(pid_t pid, const StopAsked& stop, bool& vanished) {
   const auto start = std::chrono::steady_clock::now();
   for (;;) {

@@ -1,8 +1,9 @@
 // The out-of-process StudentCode: each request goes to the sandboxed probe over a pipe and comes
 // back as plain data. One probe serves every request (a process per request would cost more than
-// most requests); a crash, a time-out, garbage or output between requests fails that request
-// with the reason and kills the probe, and the next request starts a fresh one in a fresh work
-// folder, at most `maxStarts` times: code that crashes on every request must not take forever.
+// most requests). A crash, a time-out, garbage or output between requests fails that request
+// with the reason and leaves the probe's state unknown, so it is killed and the next request
+// starts a fresh one in a fresh work folder. After `maxStarts` starts every request fails at
+// once: code that crashes on every request must not take forever to grade.
 #pragma once
 
 #include <chrono>

@@ -142,11 +142,17 @@ const char* const kPlayerScript = R"JS(
 )JS";
 
 // JSON inside <script>: no "</" that could end the element.
-std::string scriptSafe(std::string json) {
-  for (std::size_t at = json.find('<'); at != std::string::npos; at = json.find('<', at)) {
-    json.replace(at, 1, "\\u003c");
+std::string scriptSafe(const std::string& json) {
+  std::string out;
+  out.reserve(json.size());
+  for (const char c : json) {
+    if (c == '<') {
+      out += "\\u003c";
+    } else {
+      out += c;
+    }
   }
-  return json;
+  return out;
 }
 
 // The energy plot's range: the reference's, widened for the student's values by up to 1.5 of its

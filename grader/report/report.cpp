@@ -318,6 +318,7 @@ std::string writeFileAtomically(const std::filesystem::path& file, const std::st
       file.string() + ".tmp." + std::to_string(static_cast<long>(::getpid()));
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) return "cannot write " + tmp.string() + ": " + std::strerror(errno);
+  // A failure's words (errno read first), the temporary file removed.
   auto failed = [&](const std::string& what) {
     const std::string why = std::strerror(errno);
     ::unlink(tmp.c_str());
@@ -333,7 +334,8 @@ std::string writeFileAtomically(const std::filesystem::path& file, const std::st
     }
     done += static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) return failed("cannot write " + tmp.string());
+  const bool synced = ::fsync(fd) == 0;  // closed either way
+  if (::close(fd) != 0 || !synced) return failed("cannot write " + tmp.string());
   if (::rename(tmp.c_str(), file.c_str()) != 0) {
     return failed("cannot rename " + tmp.string() + " to " + file.string());
   }
