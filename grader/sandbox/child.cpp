@@ -1,6 +1,5 @@
-// The sandboxed child between fork and execve (plan.h, and sandbox.cpp's design note): system
-// calls only, no allocation; every step is a small named method, a fatal one reports its stage
-// and errno on the status pipe and exits 127.
+// The sandboxed child between fork and execve (sandbox.cpp's design note): system calls only,
+// no allocation; a fatal step reports its stage and errno on the status pipe and exits 127.
 #include <fcntl.h>
 #include <linux/seccomp.h>
 #include <poll.h>
@@ -64,8 +63,7 @@ class Child {
     if (setsid() < 0) die(kSetsid);
   }
 
-  // The grader's files out of sight (as root, when there is anything to hide, a work tmpfs or a
-  // pid namespace whose /proc to mount).
+  // The grader's files out of sight (as root, when there is anything to mount).
   void hideTheMachine() {
     if (!p_.root || (p_.ops.empty() && p_.workTmpfs.empty() && !p_.pidNamespace)) return;
     if (unshare(CLONE_NEWNS) != 0) return report(false, kUnshareMounts, errno, -1);
@@ -84,8 +82,7 @@ class Child {
     boundTheWorkDir();
   }
 
-  // In its own pid namespace (the keeper), a /proc of that namespace: the code sees its own
-  // processes only, not the machine's (needs the private mount namespace).
+  // The pid namespace's own /proc: the code sees its own processes only, not the machine's.
   void mountOwnProc() {
     if (!p_.pidNamespace || !mountNamespace_) return;
     if (mount("proc", "/proc", "proc", MS_NOSUID | MS_NODEV | MS_NOEXEC, nullptr) != 0) {
@@ -93,7 +90,6 @@ class Child {
     }
   }
 
-  // No network (as root).
   void isolateNetwork() {
     if (p_.root && unshare(CLONE_NEWNET) != 0) report(false, kUnshareNet, errno, -1);
   }
@@ -124,9 +120,8 @@ class Child {
     if (chdir(p_.workDir.c_str()) != 0) die(kChdir);
   }
 
-  // The rlimits: RLIMIT_NPROC (`processes`) comes after the uid change: set before it, a count
-  // of the new user's tasks that other sandboxes pushed over the limit meanwhile would make
-  // execve fail (EAGAIN).
+  // RLIMIT_NPROC (`processes`) comes after the uid change: before it, the new user's tasks that
+  // other sandboxes started meanwhile could make execve fail (EAGAIN).
   void applyLimits(bool processes) {
     for (std::size_t k = 0; k < p_.limits.size(); ++k) {
       if ((p_.limits[k].resource == RLIMIT_NPROC) != processes) continue;
@@ -135,8 +130,7 @@ class Child {
     }
   }
 
-  // The sandbox's user. Raw system calls: in the child of a threaded parent, only this thread
-  // exists.
+  // Raw system calls: glibc's would signal the parent's other threads, absent in this child.
   void dropPrivileges() {
     if (!p_.dropPrivileges) return;
     if (syscall(SYS_setgroups, 0, nullptr) != 0) die(kSetgroups);
@@ -144,33 +138,30 @@ class Child {
     if (syscall(SYS_setuid, p_.uid) != 0) die(kSetuid);
   }
 
-  // Dies with its parent (set after the uid change, which clears it): the grader, or in a pid
-  // namespace the keeper, which dies with the grader.
+  // Dies with its parent, the grader or the keeper (set after the uid change, which clears it).
   void dieWithTheGrader() {
     if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) die(kDeathSignal);
     if (getppid() != p_.parent) _exit(127);
   }
 
-  // The keeper, init of the pid namespace, dies with the grader. Its parent lies outside the
-  // namespace (getppid() is 0), so a grader that died before the signal was set is seen by the
-  // status pipe having no reader any more.
+  // The keeper dies with the grader. Its getppid() is 0 (outside the namespace), so a grader
+  // that died before the signal was set is seen by the status pipe having no reader.
   void keeperDiesWithTheGrader() {
     if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) die(kDeathSignal);
     pollfd pfd{statusFd_, 0, 0};
     if (poll(&pfd, 1, 0) > 0 && (pfd.revents & (POLLERR | POLLHUP)) != 0) _exit(127);
   }
 
-  // The program's process, from the keeper: a plain fork (raw, as glibc's fork would take the
-  // locks of the grader's other threads, which this copy of them may hold forever).
+  // The program, forked by the keeper (raw: glibc's fork takes locks the grader's other
+  // threads may hold forever in this copy).
   pid_t forkProgram() {
     const long pid = syscall(SYS_clone, SIGCHLD, 0, 0, 0, 0);
     if (pid < 0) die(kFork);
     return static_cast<pid_t>(pid);
   }
 
-  // The keeper, once the program runs: holds no descriptor of the grader's but its end pipe,
-  // reaps whatever the namespace leaves to it, and when the program ends writes its wait status
-  // and exits, which ends every process left in the namespace.
+  // The keeper: holds only its end pipe, reaps what the namespace leaves to it, and when the
+  // program ends writes its wait status and exits, ending every process left in the namespace.
   [[noreturn]] void keep(pid_t program) {
     const int endFd = p_.endFd;
     const int low = std::min(endFd, p_.keeperFd < 0 ? endFd : p_.keeperFd);
@@ -178,8 +169,7 @@ class Child {
     closeRange(0, low - 1, p_.maxFd);
     if (high != low) closeRange(low + 1, high - 1, p_.maxFd);
     closeRange(high + 1, 0x7fffffff, p_.maxFd);
-    // a6-keeper in place of this copy of the grader (whose memory it would hold); the loop below
-    // where it cannot be run.
+    // a6-keeper in place of this copy of the grader (whose memory it would hold); else the loop.
     if (p_.keeperFd >= 0 && fcntl(endFd, F_SETFD, 0) == 0) {  // the pipe kept across exec
       char* noEnv[] = {nullptr};
       syscall(SYS_execveat, p_.keeperFd, "", p_.keeperArgv.data(), noEnv, AT_EMPTY_PATH);
@@ -217,8 +207,7 @@ class Child {
  private:
   std::size_t fdCount() const { return std::min<std::size_t>(p_.fds.size(), 64); }
 
-  // /dev/null, what covers a hidden file, and everything to reveal: opened before anything is
-  // covered.
+  // /dev/null (covers hidden files) and everything to reveal, opened before anything is covered.
   void openBeforeCovering() {
     const int nullPath = ::open("/dev/null", O_PATH | O_CLOEXEC);
     if (nullPath >= 0) procFdPath(nullPath, nullSource_);
@@ -248,8 +237,8 @@ class Child {
     if (rc != 0) report(false, kHide, errno, index);
   }
 
-  // The original bound back, unless it is still visible as it is; the way to it rebuilt with
-  // folders searchable by the child's user, whatever the grader's umask.
+  // The original bound back unless still visible; the way to it rebuilt with folders the
+  // child's user can search, whatever the grader's umask.
   void reveal(const MountOp& op, int index) {
     struct stat st, want;
     if (fstat(op.fd, &want) != 0) die(kReveal, index);
@@ -278,7 +267,7 @@ class Child {
     ::close(fd);
   }
 
-  // The work dir: a tmpfs of its own size, so that what the child writes is bounded.
+  // A tmpfs work dir bounds what the child writes.
   void boundTheWorkDir() {
     if (!p_.workTmpfs.empty() && mount("a6-work", p_.workDir.c_str(), "tmpfs", MS_NOSUID | MS_NODEV,
                                        p_.workTmpfs.c_str()) != 0) {
@@ -322,10 +311,8 @@ class Child {
 
 }  // namespace
 
-// The child of the grader. In its own pid namespace (as root) it is that namespace's init, the
-// keeper, and the program runs as its child: every process the program starts, in a new session
-// or not, lives in the namespace and ends with the keeper, and no signal from the code reaches a
-// process outside it. Without one, the child is the program itself.
+// In its own pid namespace the child is the keeper, the program its child (sandbox.h, step 0);
+// without one, the child is the program itself.
 [[noreturn]] void childMain(Plan& plan) {
   Child child(plan);
   if (plan.pidNamespace) child.keeperDiesWithTheGrader();

@@ -1,11 +1,7 @@
-// a6-keeper: the init of a sandboxed command's pid namespace (grader/sandbox/sandbox.h), run in
-// place of the grader's copy that set the namespace up, so that the copy's memory (the whole
-// grader's, shared copy-on-write) is not held while the program runs.
-//
-//   a6-keeper END_FD
-// Takes: the program, its child with pid 2 in this namespace (the first the set-up forked), and
-// END_FD, a pipe to the grader. Gives: the program's wait status on END_FD once it ends, then
-// exits, which ends every process left in the namespace. Reaps every orphan meanwhile.
+// a6-keeper END_FD: the init of a sandboxed command's pid namespace (sandbox.h), exec'd in place
+// of the grader's copy that set it up, so that the grader's memory is not held while the program
+// runs. Reaps every orphan; when the program (pid 2) ends, writes its wait status on END_FD and
+// exits, which ends every process left in the namespace.
 #include <sys/wait.h>
 #include <unistd.h>
 

@@ -1,6 +1,5 @@
-// What the sandboxed child will do, prepared in the parent before fork (plan.h): the mounts
-// that hide the machine and reveal what the command may see, the work folder, the limits and the
-// fds; and the sentence for each step the child reports as failed.
+// What the sandboxed child will do, prepared in the parent before fork (plan.h), and the
+// sentence for each step the child reports as failed.
 #include "sandbox/plan.h"
 
 #include <fcntl.h>
@@ -60,11 +59,7 @@ std::string prepareWorkDir(const fs::path& dir, const Plan& plan) {
   std::error_code ec;
   const fs::file_status st = fs::symlink_status(abs, ec);
   if (fs::exists(st)) {
-    if (fs::is_directory(st)) {
-      fs::remove_all(abs, ec);
-    } else {
-      fs::remove(abs, ec);
-    }
+    fs::remove_all(abs, ec);  // a link itself, never its target
     if (ec) return "cannot empty the work dir " + abs.string() + ": " + ec.message();
   }
   fs::create_directories(abs, ec);
@@ -93,9 +88,8 @@ std::vector<fs::path> revealsOf(const SandboxSpec& spec, const Plan& plan) {
   return reveals;
 }
 
-// A folder the child's user cannot search (a checkout in /root, mode 0700) would keep it from
-// what lies inside, even bound back in place: the outermost such folder above a revealed path is
-// covered whole, and the reveal rebuilds the way in with searchable folders (childMain).
+// A folder the child's user cannot search (a checkout in /root, 0700) would shut it out of a
+// reveal inside: the outermost such folder is covered, and the reveal rebuilds the way in.
 std::vector<fs::path> unsearchableAncestors(const std::vector<fs::path>& reveals,
                                             const Plan& plan) {
   std::vector<fs::path> covers;
@@ -179,8 +173,7 @@ void planReveals(const std::vector<fs::path>& reveals, const std::vector<fs::pat
   }
 }
 
-// SandboxSpec::hide and reveal as mount operations, outer paths first; as a non-root user, a
-// note naming what stays readable instead.
+// SandboxSpec::hide and reveal as mount operations, outer paths first; not as root, a note.
 void planMounts(const SandboxSpec& spec, Plan& plan) {
   const std::vector<fs::path> reveals = revealsOf(spec, plan);
   const std::vector<fs::path> hidden = planHides(hidesOf(spec, reveals, plan), plan);
@@ -234,8 +227,8 @@ void planLimits(const Limits& l, Plan& plan) {
   plan.limits.push_back({RLIMIT_NPROC, nproc, nproc});
 }
 
-// The descriptors the child receives, and the free range above them the child uses
-// while moving them into place. Returns an error, or "".
+// The fds the child receives, and the free range above them it moves them through. Returns an
+// error, or "".
 std::string planFds(const SandboxSpec& spec, Plan& plan) {
   int highest = 2;
   for (const auto& [from, to] : spec.mapFds) {
@@ -252,8 +245,7 @@ std::string planFds(const SandboxSpec& spec, Plan& plan) {
   return "";
 }
 
-// The sentence for a failed step that isolates the child (mounts, network, seccomp); "" for
-// the other steps.
+// The sentence for a failed isolating step (mounts, network, seccomp); "" for the others.
 std::string describeIsolationStep(const Record& r, const Plan& plan) {
   const std::string err = errnoText(r.err);
   const bool hasOp = r.index >= 0 && static_cast<std::size_t>(r.index) < plan.ops.size();

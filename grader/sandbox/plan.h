@@ -1,13 +1,10 @@
-// The inside of the sandbox (sandbox/, not for use outside it): the Plan that sandbox.cpp makes
-// before fork, the records the child reports its steps in, and the parts by concern:
-//   plan.cpp    what the child will do, prepared in the parent: mounts (what is hidden and what
-//               revealed), the work folder, limits, fds (makePlan); the sentence for a step that
-//               failed (describeRecord)
-//   child.cpp   the child between fork and execve, system calls only: its session, namespaces,
-//               mounts, network, limits, fds, user, filter, exec (childMain)
+// The inside of the sandbox (not for use outside sandbox/): the Plan made before fork, the
+// records the child reports failed steps in, and the parts by concern:
+//   plan.cpp    the plan, made in the parent (makePlan); a failed step's sentence (describeRecord)
+//   child.cpp   the child between fork and execve, system calls only (childMain)
 //   filter.cpp  the seccomp program (filterFor)
-//   output.cpp  the captured output and how the pipe is read (output.h)
-//   sandbox.cpp starting, waiting, ending and capturing (runSandboxed, SandboxedProcess), views
+//   output.cpp  the captured output (output.h)
+//   sandbox.cpp starting, waiting, ending and capturing; the views
 #pragma once
 
 #include <linux/filter.h>
@@ -28,7 +25,6 @@ namespace a6::grader::sandboxing {
 inline std::string errnoText(int err) { return std::strerror(err); }
 
 // The status pipe's records: a step of the child that failed (fatal or not), with its errno.
-
 enum Stage : std::int32_t {
   kSetsid = 1,
   kUnshareMounts,
@@ -66,8 +62,8 @@ struct MountOp {
   // Reveal only:
   std::vector<std::string> chain;  // the ancestors of path, outermost first
   bool isDir = false;
-  int fd = -1;           // O_PATH fd on the original, opened by the child in its new
-                         // namespace (a bind source must be in the caller's namespace)
+  int fd = -1;           // O_PATH fd on the original, opened by the child (a bind source
+                         // must be in the caller's mount namespace)
   char source[32] = {};  // "/proc/self/fd/<fd>", written by the child
 };
 
@@ -102,15 +98,13 @@ struct Plan {
   std::vector<std::string> notes;  // found by the parent
 };
 
-// plan.cpp: the plan for spec, or what keeps the sandbox from starting ("": none).
+// plan.cpp: the plan, or what keeps the sandbox from starting ("": none).
 std::string makePlan(const SandboxSpec& spec, Plan& plan);
-// plan.cpp: the sentence for a record the child sent.
 std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec& spec);
-// plan.cpp: removes a work folder the plan made.
 void deleteWorkDir(const std::string& dir);
 // filter.cpp: the seccomp program (built once per kind), or empty with error set.
 const std::vector<sock_filter>& filterFor(bool noFork, std::string& error);
-// child.cpp: the child's whole life after fork: never returns (execve, or _exit 127).
+// child.cpp: never returns (execve, or _exit 127).
 [[noreturn]] void childMain(Plan& plan);
 
 }  // namespace a6::grader::sandboxing

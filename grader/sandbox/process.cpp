@@ -31,8 +31,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr gid_t kNogroup = 65534;
-// Where every uid is mapped, the sandbox's uids are drawn from [1e6, 2e9]; in a user namespace
-// that maps fewer (a container's 65536), from the top of the mapped range, below nobody's.
+// Sandbox uids: [1e6, 2e9] where every uid is mapped; else (a container's 65536) the top of the
+// mapped range, below nobody's.
 constexpr unsigned long kDrawFrom = 1000000, kDrawTo = 2000000000;
 constexpr unsigned long kSmallRangeFrom = 60001, kSmallRangeTo = 65533;
 
@@ -44,17 +44,7 @@ bool isPid(const std::string& name) {
   return !name.empty() && name.find_first_not_of("0123456789") == std::string::npos;
 }
 
-// "Uid:\t1000\t1000\t1000\t1000": the first two numbers.
-void readUids(const std::string& rest, Info& info) {
-  std::istringstream in(rest);
-  long real = -1, effective = -1;
-  in >> real >> effective;
-  info.realUid = static_cast<uid_t>(real);
-  info.effectiveUid = static_cast<uid_t>(effective);
-}
-
-// Sends `signo` to `pid` if it still runs as `uid`: through a pidfd, so that a pid reused
-// between reading /proc and signalling is never hit.
+// Sends `signo` to `pid` if it still runs as `uid`, through a pidfd (a reused pid is never hit).
 void signalIfUid(pid_t pid, uid_t uid, int signo) {
   const int fd = static_cast<int>(syscall(SYS_pidfd_open, pid, 0));
   if (fd < 0) {
@@ -68,14 +58,10 @@ void signalIfUid(pid_t pid, uid_t uid, int signo) {
   ::close(fd);
 }
 
-fs::path lockDirectory() {
-  if (access("/run/lock", W_OK) == 0) return "/run/lock";
-  return "/tmp";
-}
-
 // An exclusive lock on the uid's lock file: its fd, or -1 when another grading holds it.
 int lockUid(uid_t uid) {
-  const fs::path file = lockDirectory() / ("a6-sandbox-uid-" + std::to_string(uid) + ".lock");
+  const fs::path dir = access("/run/lock", W_OK) == 0 ? "/run/lock" : "/tmp";
+  const fs::path file = dir / ("a6-sandbox-uid-" + std::to_string(uid) + ".lock");
   const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
   if (fd < 0) return -1;
   if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
@@ -111,8 +97,7 @@ bool runsAs(uid_t uid) {
   return WIFEXITED(*status) && WEXITSTATUS(*status) == 0;
 }
 
-// The uids this process may switch to: the widest range its user namespace maps
-// (/proc/self/uid_map), cut to where sandbox uids are drawn.
+// Where sandbox uids are drawn: the widest range the user namespace maps, cut to those above.
 std::pair<unsigned long, unsigned long> drawRange() {
   std::ifstream map("/proc/self/uid_map");
   unsigned long inside = 0, outside = 0, count = 0, bestFrom = 0, bestCount = 0;
@@ -125,14 +110,13 @@ std::pair<unsigned long, unsigned long> drawRange() {
   return {std::max(bestFrom + 1, kSmallRangeFrom), std::min(last, kSmallRangeTo)};
 }
 
-// True when some process in /proc runs as `uid`.
 bool inUse(uid_t uid, const std::vector<Info>& processes) {
   return std::any_of(processes.begin(), processes.end(),
                      [uid](const Info& p) { return p.realUid == uid || p.effectiveUid == uid; });
 }
 
-// A uid drawn at random that no account, process or other grading's lock holds; its lock in
-// `fd`. False (with `error`) when 200 draws found none.
+// A random uid no account, process or other grading's lock holds, locked in `fd`. False (with
+// `error`) when 200 draws found none.
 bool drawUnusedUid(int& fd, uid_t& uid, std::string& error) {
   const auto [from, to] = drawRange();
   if (from > to) {
@@ -181,8 +165,11 @@ std::optional<Info> describe(pid_t pid) {
       if (at != std::string::npos) info.state = rest[at];
     } else if (key == "PPid") {
       info.ppid = static_cast<pid_t>(std::atol(rest.c_str()));
-    } else if (key == "Uid") {
-      readUids(rest, info);
+    } else if (key == "Uid") {  // real, effective, saved, filesystem
+      long real = -1, effective = -1;
+      std::istringstream(rest) >> real >> effective;
+      info.realUid = static_cast<uid_t>(real);
+      info.effectiveUid = static_cast<uid_t>(effective);
     } else if (key == "Threads") {
       info.threads = std::atoi(rest.c_str());
     } else if (key == "Seccomp") {
@@ -336,8 +323,7 @@ UidClaim claimUid(std::optional<uid_t> wanted, std::string& error) {
       return claim;
     }
     claim.uid_ = *wanted;
-    // Its processes are not ours to end (another grading's, or what one left behind), unless
-    // there is no pid namespace to end what each sandbox starts: then they are found by uid.
+    // Its processes are not ours to end, unless no pid namespace ends what each sandbox starts.
     if (pidNamespaces()) {
       if (inUse(*wanted, all())) {
         error = "sandbox uid " + std::to_string(*wanted) +

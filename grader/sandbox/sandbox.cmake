@@ -1,6 +1,5 @@
-# The layer under every stage (sandbox/): processes (waiting, ending strays and a sandbox user's
-# processes, claiming a user; process.h) and the sandbox that runs the compiler, the linker and
-# the probe (sandbox.h; its inside by concern in plan.h). Gives a6_process and a6_sandbox.
+# The layer under every stage (sandbox/): processes (process.h) and the sandbox that runs the
+# compiler, the linker and the probe (sandbox.h, plan.h). Gives a6_process and a6_sandbox.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(SECCOMP REQUIRED IMPORTED_TARGET GLOBAL libseccomp)
 find_package(Threads REQUIRED)
@@ -18,8 +17,7 @@ target_include_directories(a6_sandbox PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_sandbox PUBLIC a6_process PkgConfig::SECCOMP Threads::Threads)
 target_compile_options(a6_sandbox PRIVATE ${A6_WARNINGS})
 
-# The init of each sandboxed command's pid namespace, exec'd by the grader's copy that set it up
-# (without it, that copy keeps the loop itself, holding the grader's memory copy-on-write).
+# The init of each sandboxed command's pid namespace (keeper_main.cpp).
 add_executable(a6_keeper ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/keeper_main.cpp)
 target_compile_options(a6_keeper PRIVATE ${A6_WARNINGS})
 add_dependencies(a6_sandbox a6_keeper)

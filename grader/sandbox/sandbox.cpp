@@ -1,11 +1,9 @@
 // The sandbox (see sandbox.h for what the child gets, in order).
 //
-// Design note: fork, then only system calls.
-// The grader may run several sandboxes from several threads. Between fork() and execve() the
-// child may only make async-signal-safe calls, so everything it needs (argv and envp arrays,
-// paths, the mount plan, the rlimits, the seccomp program) is prepared in a Plan before fork,
-// and the child reports what failed through a close-on-exec status pipe as fixed-size records
-// (stage, errno); the parent turns them into sentences. EOF on that pipe means execve worked.
+// Design note: fork, then only system calls. The grader forks from several threads, so the
+// child may only make async-signal-safe calls: all it needs is prepared in a Plan before fork,
+// and it reports failed steps as fixed-size records (stage, errno) on a close-on-exec status
+// pipe, which the parent turns into sentences. EOF on that pipe means execve worked.
 #include "sandbox/sandbox.h"
 
 #include <fcntl.h>
@@ -102,21 +100,39 @@ bool awaitExec(int statusFd, const Plan& plan, const SandboxSpec& spec, Started&
   return started;
 }
 
-// The output pipe and the status pipe, both close-on-exec. Returns an error, or "".
-std::string openPipes(int out[2], int status[2]) {
-  if (pipe2(out, O_CLOEXEC) != 0) return "pipe: " + errnoText(errno);
-  if (pipe2(status, O_CLOEXEC) != 0) {
+// The output, status and end pipes, all close-on-exec. Returns an error, or "".
+std::string openPipes(int (&pipes)[3][2]) {
+  for (int k = 0; k < 3; ++k) {
+    if (pipe2(pipes[k], O_CLOEXEC) == 0) continue;
     const std::string error = "pipe: " + errnoText(errno);
-    ::close(out[0]);
-    ::close(out[1]);
+    for (int j = 0; j < k; ++j) {
+      ::close(pipes[j][0]);
+      ::close(pipes[j][1]);
+    }
     return error;
   }
   return "";
 }
 
-// The child: as root, the init of a pid namespace of its own (clone(CLONE_NEWPID), raw, so the
-// child runs only system calls as after fork); where the kernel refuses one, or not as root, a
-// plain fork, and a note says what that leaves unprotected. Returns fork()'s result.
+// Kills the whole group (the child stays unreaped until then, so its pgid is not reused) and
+// reaps the child. `cpuSeconds`, when given, receives the CPU time the child and what it reaped
+// used (in a pid namespace, the keeper reaped the program: its time is in there).
+int killAndReap(pid_t pid, double* cpuSeconds = nullptr) {
+  kill(-pid, SIGKILL);
+  kill(pid, SIGKILL);
+  int status = 0;
+  rusage usage{};
+  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+  }
+  if (cpuSeconds != nullptr) {
+    *cpuSeconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                  static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
+  }
+  return status;
+}
+
+// As root, the child is the init of its own pid namespace (a raw clone, so that it makes only
+// system calls, as after fork); refused or not root, a plain fork, with a note. Returns the pid.
 pid_t forkChild(Plan& plan, std::vector<std::string>& notes) {
   if (plan.root) {
     plan.pidNamespace = true;
@@ -144,13 +160,11 @@ Started start(const SandboxSpec& spec) {
   s.error = makePlan(spec, plan);
   s.workDir = plan.workDir;
   s.notes = plan.notes;
-  int out[2], status[2], end[2] = {-1, -1};
-  if (!s.error.empty() || !(s.error = openPipes(out, status)).empty()) return s;
-  if (pipe2(end, O_CLOEXEC) != 0) {
-    s.error = "pipe: " + errnoText(errno);
-    for (int fd : {out[0], out[1], status[0], status[1]}) ::close(fd);
-    return s;
-  }
+  int pipes[3][2];
+  if (!s.error.empty() || !(s.error = openPipes(pipes)).empty()) return s;
+  int(&out)[2] = pipes[0];
+  int(&status)[2] = pipes[1];
+  int(&end)[2] = pipes[2];
   plan.outFd = out[1];
   plan.statusFd = status[1];
   plan.endFd = end[1];
@@ -166,9 +180,7 @@ Started start(const SandboxSpec& spec) {
     return s;
   }
   if (!awaitExec(status[0], plan, spec, s)) {
-    kill(-pid, SIGKILL);
-    kill(pid, SIGKILL);
-    waitpid(pid, nullptr, 0);
+    killAndReap(pid);
     ::close(out[0]);
     ::close(end[0]);
     return s;
@@ -182,9 +194,8 @@ Started start(const SandboxSpec& spec) {
   return s;
 }
 
-// How the program ended, given the child's wait status: in a pid namespace the keeper wrote the
-// program's own status before it exited; without that (the keeper was killed: a time-out, a
-// stop) the child's. Closes endFd.
+// The program's wait status: the one the keeper wrote in a pid namespace, else (no namespace,
+// or the keeper was killed) the child's. Closes endFd.
 int programStatus(int endFd, int childStatus) {
   if (endFd < 0) return childStatus;
   int status = 0;
@@ -193,8 +204,8 @@ int programStatus(int endFd, int childStatus) {
   return n == static_cast<ssize_t>(sizeof status) ? status : childStatus;
 }
 
-// Fills kind and code from a wait status.
-void setEnding(Exit& exit, int status) {
+// Fills kind and code from a wait status, and the output from what was captured.
+void setEnding(Exit& exit, int status, const Sink& sink) {
   if (WIFSIGNALED(status)) {
     exit.kind = Exit::Kind::Signaled;
     exit.code = WTERMSIG(status);
@@ -202,6 +213,8 @@ void setEnding(Exit& exit, int status) {
     exit.kind = Exit::Kind::Exited;
     exit.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
+  exit.output = sink.text();
+  exit.outputTruncated = sink.truncated;
 }
 
 // True once `pid` has ended (left unreaped).
@@ -209,23 +222,6 @@ bool hasEnded(pid_t pid) {
   siginfo_t info{};
   return waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 &&
          info.si_pid == pid;
-}
-
-// Kills the whole group (the child stays unreaped until then, so its pgid is not reused) and
-// reaps the child. `cpuSeconds`, when given, receives the CPU time the child and what it reaped
-// used (in a pid namespace, the keeper reaped the program: its time is in there).
-int killAndReap(pid_t pid, double* cpuSeconds = nullptr) {
-  kill(-pid, SIGKILL);
-  kill(pid, SIGKILL);
-  int status = 0;
-  rusage usage{};
-  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
-  }
-  if (cpuSeconds != nullptr) {
-    *cpuSeconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-                  static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
-  }
-  return status;
 }
 
 const char* signalText(int sig) {
@@ -252,7 +248,6 @@ bool readUntilEnd(pid_t pid, int outFd, Clock::time_point deadline, Sink& sink, 
   const int pidFd = static_cast<int>(syscall(SYS_pidfd_open, pid, 0));
   bool ended = false;
   while (!(ended = hasEnded(pid)) && Clock::now() < deadline) {
-    // Wait for output, the child's end (pidfd), or the deadline.
     pollfd pfds[2];
     nfds_t n = 0;
     if (outOpen) pfds[n++] = {outFd, POLLIN, 0};
@@ -311,19 +306,14 @@ Exit runSandboxed(const SandboxSpec& spec) {
                   std::chrono::duration<double>(std::max(0.0, spec.limits.wallSeconds)));
   bool outOpen = true;
   const bool timedOut = !readUntilEnd(s.pid, s.outFd, deadline, sink, outOpen);
-  // Stragglers of its group go too.
-  int status = timedOut ? killAndReap(s.pid) : killAndReap(s.pid, &exit.cpuSeconds);
+  const int status = timedOut ? killAndReap(s.pid) : killAndReap(s.pid, &exit.cpuSeconds);
   if (outOpen) readAfterEnd(s.outFd, sink, Clock::now() + std::chrono::milliseconds(500));
   ::close(s.outFd);
-  status = programStatus(s.endFd, status);
+  setEnding(exit, programStatus(s.endFd, status), sink);
   if (timedOut) {
     exit.kind = Exit::Kind::TimedOut;
     exit.code = SIGKILL;
-  } else {
-    setEnding(exit, status);
   }
-  exit.output = sink.text();
-  exit.outputTruncated = sink.truncated;
   exit.wallSeconds = timedOut ? spec.limits.wallSeconds : secondsSince(begin);
   if (spec.removeWorkDir) deleteWorkDir(s.workDir);
   return exit;
@@ -369,8 +359,8 @@ SandboxedProcess::SandboxedProcess(const SandboxSpec& spec) : state_(new State) 
   state_->endFd = s.endFd;
   state_->pidNamespace = s.endFd >= 0;
   State* state = state_;
-  // Drains the output until its end, or shortly after stop() (a process that escaped the group
-  // could hold the pipe open forever).
+  // Drains the output until its end, or shortly after stop() (an escaped process could hold
+  // the pipe open forever).
   state_->drainer = std::thread([state] {
     bool open = true;
     while (open && !state->stopping.load()) {
@@ -416,10 +406,8 @@ Exit SandboxedProcess::stop() {
   ::close(state_->outFd);
   state_->outFd = -1;
   Exit& exit = state_->exit;
-  setEnding(exit, status);
+  setEnding(exit, status, state_->sink);
   exit.cpuSeconds = cpuSeconds;
-  exit.output = state_->sink.text();
-  exit.outputTruncated = state_->sink.truncated;
   exit.wallSeconds = secondsSince(state_->begin);
   exit.notes = state_->notes;
   if (state_->removeWorkDir) deleteWorkDir(state_->workDir);
@@ -437,7 +425,6 @@ bool isWithin(const std::filesystem::path& inner, const std::filesystem::path& o
 
 void hideExcept(const std::filesystem::path& secret, const std::vector<std::filesystem::path>& keep,
                 std::vector<std::filesystem::path>& out, int depth) {
-  namespace fs = std::filesystem;
   std::vector<fs::path> inside;
   for (const fs::path& k : keep) {
     if (isWithin(secret, k)) return;  // the secret lies inside something kept visible
@@ -445,8 +432,7 @@ void hideExcept(const std::filesystem::path& secret, const std::vector<std::file
   }
   std::error_code ec;
   const fs::file_status st = fs::symlink_status(secret, ec);
-  // A link is not covered itself (that would cover its target): what it points to is either a
-  // secret of its own or harmless.
+  // A link is not covered (that would cover its target, a secret of its own or harmless).
   if (ec || !fs::exists(st) || fs::is_symlink(st)) return;
   if (inside.empty() || !fs::is_directory(st) || depth > 64) {
     out.push_back(secret);
@@ -459,7 +445,6 @@ void hideExcept(const std::filesystem::path& secret, const std::vector<std::file
 
 SandboxView allowOnly(const std::vector<std::filesystem::path>& visible,
                       const std::vector<std::filesystem::path>& secrets) {
-  namespace fs = std::filesystem;
   SandboxView view;
   std::vector<fs::path> keep = {"/usr",
                                 "/bin",
@@ -483,8 +468,7 @@ SandboxView allowOnly(const std::vector<std::filesystem::path>& visible,
     if (std::find(view.hide.begin(), view.hide.end(), p) == view.hide.end()) view.hide.push_back(p);
   }
   view.reveal = {"/dev/null", "/dev/zero", "/dev/urandom"};
-  // Kept in reveal too: where a folder above one cannot be searched by the child's user, that
-  // folder is covered and the visible path bound back (planMounts).
+  // Revealed too, for a folder above one that the child's user cannot search (planMounts).
   for (const fs::path& v : visible) view.reveal.push_back(fs::absolute(v).lexically_normal());
   return view;
 }
