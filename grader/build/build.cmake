@@ -1,21 +1,16 @@
-# Build (build/): the seven task files to a linked probe, each file compiled alone in the sandbox
-# (a6_build), and the kit the build links against (a6_grader_kit, described by
-# BUILD/grader/kit.json). Takes a6_sandbox and the probe's link line (probe/probe.cmake).
+# Build (build/): the task files to a linked probe, each compiled alone in the sandbox
+# (a6_build), and the kit it links against (a6_grader_kit, described by BUILD/grader/kit.json).
 #
-# The kit folder, BUILD/grader/kit/, holds what a submission's compile reads besides the system
-# headers, so that the sandbox can hide the rest of the repository and the build tree:
-#   include/a6/*.h        the student API headers (and nothing else of the framework)
-#   pch/a6_pch.h(.gch)    Eigen/Core and the standard headers the a6 headers use, precompiled
-#                         with the kit's flags and force-included (-include): a compile takes a
-#                         quarter of the time
-#   starter/<task>.o      the starter's seven objects (a missing or broken task file falls back)
-#   starter/<task>.syms   the symbols each defines, demangled (to tell which task a link error
-#                         about an undefined symbol belongs to)
-# The probe's main object and libraries stay where probe/probe.cmake builds them (its
-# A6_PROBE_LINK_MAIN and A6_PROBE_LINK_LIBRARIES); kit.json names them and the build reveals them.
+# The kit folder, BUILD/grader/kit/, holds all a compile reads besides the system headers, so
+# that the sandbox can hide the rest of the repository and the build tree:
+#   include/a6/*.h        the student API headers only
+#   pch/a6_pch.h(.gch)    Eigen/Core and standard headers, precompiled and force-included (a
+#                         compile takes a quarter of the time)
+#   starter/<task>.o      the starter's objects (a missing or broken task file falls back)
+#   starter/<task>.syms   the symbols each defines (whose task an undefined symbol is)
+# The probe's main and libraries stay where probe/probe.cmake builds them; kit.json names them.
 
-# Script mode: cmake -DNM=... -DOBJECT=... -DOUT=... -P build.cmake writes the symbols
-# OBJECT defines, one per line.
+# Script mode (-DNM= -DOBJECT= -DOUT= -P build.cmake): the symbols OBJECT defines, one a line.
 if(CMAKE_SCRIPT_MODE_FILE)
   execute_process(COMMAND ${NM} -C -g --defined-only -j ${OBJECT}
                   OUTPUT_FILE ${OUT} RESULT_VARIABLE result)
@@ -67,9 +62,8 @@ foreach(file IN LISTS A6_TASK_FILES)
   list(APPEND kit_files ${object} ${A6_KIT_DIR}/starter/${file}.syms)
 endforeach()
 
-# The flags every task file is compiled with: those of the project's own build (C++17, -O2,
-# no FMA contraction, NDEBUG as in the default RelWithDebInfo build), warnings on so that
-# students see them, plain diagnostics, and only the staged headers plus Eigen's.
+# The project's own flags (as the default RelWithDebInfo build), warnings for the students, plain
+# diagnostics, and only the staged headers plus Eigen's and Box2D's.
 set(A6_KIT_COMPILE_FLAGS -std=c++17 -O2 -DNDEBUG -ffp-contract=off ${A6_WARNINGS}
     -fdiagnostics-color=never -fmax-errors=20 -pipe -I${A6_KIT_DIR}/include)
 foreach(dep Eigen3::Eigen box2d::box2d)
@@ -83,8 +77,7 @@ foreach(dep Eigen3::Eigen box2d::box2d)
 endforeach()
 list(REMOVE_DUPLICATES A6_KIT_COMPILE_FLAGS)
 
-# The precompiled header: built with exactly the flags above (GCC uses it only then; otherwise
-# it reads a6_pch.h itself, slower but the same).
+# The precompiled header, with exactly the flags above (else GCC reads a6_pch.h, slower).
 set(A6_KIT_PCH ${A6_KIT_DIR}/pch/a6_pch.h)
 file(GENERATE OUTPUT ${A6_KIT_PCH} CONTENT
 "// Force-included into every task file the grader compiles (-include), precompiled beside it.
@@ -97,8 +90,7 @@ file(GENERATE OUTPUT ${A6_KIT_PCH} CONTENT
 #include <limits>
 #include <vector>
 ")
-# Both compiled through the build's compiler cache when it has one (cmake/A6FastBuild.cmake):
-# the same bytes as the compiler's, which a second build or a copy of the checkout reuses.
+# Through the build's compiler cache when it has one (cmake/A6FastBuild.cmake).
 add_custom_command(
   OUTPUT ${A6_KIT_PCH}.gch
   COMMAND ${CMAKE_CXX_COMPILER_LAUNCHER} ${CMAKE_CXX_COMPILER} ${A6_KIT_COMPILE_FLAGS}
@@ -109,11 +101,9 @@ add_custom_command(
 list(APPEND kit_files ${A6_KIT_PCH}.gch)
 list(APPEND A6_KIT_COMPILE_FLAGS -include ${A6_KIT_PCH})
 
-# Known texts: the solution's files and their objects, beside the kit (never in it: the kit
-# folder is in every compile's view, this one is hidden with the build tree), each compiled
-# exactly as the grader compiles a submitted file (the kit's compiler and flags, the file's folder
-# mapped away). A submitted file equal to one byte for byte is linked with its object instead of
-# being compiled (Kit::knownObjects): the grader's own texts are all that gradings share.
+# Known texts: the solution's files and objects, compiled as the grader compiles a submitted
+# file, beside the kit (never in it: hidden with the build tree). A submitted file equal to one
+# gets its object (Kit::knownObjects): the grader's own texts are all that gradings share.
 set(A6_KNOWN_DIR "")
 if(A6_HAVE_SOLUTION)
   set(A6_KNOWN_DIR ${CMAKE_CURRENT_BINARY_DIR}/known)
@@ -133,13 +123,7 @@ if(A6_HAVE_SOLUTION)
   endforeach()
 endif()
 
-# What the probe links besides the student's seven objects (probe/probe.cmake's link line).
-set(A6_KIT_PROBE_MAIN ${A6_PROBE_LINK_MAIN})
-set(A6_KIT_MODELS_MAIN ${A6_PROBE_LINK_MODELS_MAIN})
-set(A6_KIT_LINK_INPUTS ${A6_PROBE_LINK_LIBRARIES})
-
-# kit.json (see Kit in build.h).
-# Items may be generator expressions that expand to lists ($<TARGET_OBJECTS:...>).
+# kit.json (see Kit in build.h). Items may be generator expressions that expand to lists.
 function(a6_json_array out)
   set(items "")
   foreach(item IN LISTS ARGN)
@@ -155,9 +139,9 @@ function(a6_json_array out)
   set(${out} "[${joined}]" PARENT_SCOPE)
 endfunction()
 a6_json_array(json_flags ${A6_KIT_COMPILE_FLAGS})
-a6_json_array(json_main ${A6_KIT_PROBE_MAIN})
-a6_json_array(json_models_main ${A6_KIT_MODELS_MAIN})
-a6_json_array(json_link ${A6_KIT_LINK_INPUTS})
+a6_json_array(json_main ${A6_PROBE_LINK_MAIN})
+a6_json_array(json_models_main ${A6_PROBE_LINK_MODELS_MAIN})
+a6_json_array(json_link ${A6_PROBE_LINK_LIBRARIES})
 a6_json_array(json_secrets ${PROJECT_SOURCE_DIR} ${CMAKE_BINARY_DIR})
 file(GENERATE OUTPUT ${A6_KIT_JSON} CONTENT "{
   \"compiler\": \"${CMAKE_CXX_COMPILER}\",

@@ -1,21 +1,13 @@
 // Building a submission's probe. See build.h for the contract.
 //
-// Build notes
-// -----------
-// Compiling is as untrusted as running: `#include "/path/to/solution/spring.cpp"` would copy the
-// solution into the student's object, and an error message would print it. So the compiler and
-// the linker run in the sandbox (grader/sandbox/sandbox.h) with the kit's secrets hidden (the
-// repository and the build tree) except the kit folder (staged a6/ headers, the precompiled
-// header, starter objects), the probe's link inputs, the work folder and the student's files.
-// Hiding a folder except something inside it is done by hiding its other entries, level by
-// level down to what stays visible, so that nothing has to be mounted back.
+// Build notes: compiling is as untrusted as running (`#include "/path/to/solution/spring.cpp"`
+// would copy the solution into the object, an error message would print it), so the tools run
+// in the sandbox with the kit's secrets hidden, except what they need.
 //
-// Each task file is its own translation unit, compiled alone: a file that is missing, does not
-// compile or runs out of time is replaced by the starter's prebuilt object, so only its task
-// loses points. The link can still fail because of one file (it defines main(), or a symbol the
-// framework defines, or lacks a function the framework calls because it was renamed): then the
-// objects the linker complains about are replaced, one at a time, by the starter's, until the
-// probe links; the starter alone always links.
+// Each task file is compiled alone: one that is missing, does not compile or runs out of time
+// is replaced by the starter's object, so only its task loses points. A link that fails because
+// of one file (it defines main() or a framework symbol, or renamed a function the framework
+// calls) replaces the objects the linker blames, one at a time; the starter alone always links.
 #include "build/build.h"
 
 #include <elf.h>
@@ -90,12 +82,9 @@ std::vector<std::string> undefinedSymbols(const std::string& linkerOutput) {
 
 std::string stem(const std::string& file) { return fs::path(file).stem().string(); }
 
-// What the compiler (`link` false) or the linker sees (an allow-list): the system's programs,
-// headers and libraries, the kit, the work folder and the student's files, and for the linker
-// the probe's link inputs too (never the compiler: `.incbin` would copy the reference models'
-// object into the student's); of /dev, only null, zero and urandom (a source that includes
-// /dev/ptmx or a tty would block the compiler). The kit's secrets are named first where nothing
-// can be hidden (not root).
+// What the compiler or (`link`) the linker sees: the system, the kit, the work folder and the
+// student's files; the link inputs for the linker only (`.incbin` in a compile would copy the
+// reference models into the student's object); of /dev, only what cannot block the compiler.
 SandboxView viewOfTools(const Kit& kit, const fs::path& workDir,
                         const std::vector<fs::path>& sources, bool link) {
   std::vector<fs::path> keep = {absoluteClean(kit.dir), workDir};
@@ -123,9 +112,9 @@ Exit runTool(const Kit& kit, const SandboxView& view, const fs::path& dir,
   return runSandboxed(s);
 }
 
-// Code in an object that would run before the probe's seccomp filter is on: an entry of
-// .preinit_array, or an ifunc resolver (run by the dynamic loader while it relocates). What the
-// object holds of them, or "" (also for what is not a 64-bit ELF object: the linker judges it).
+// Code in an object that would run before the probe's seccomp filter: a .preinit_array entry,
+// or an ifunc resolver (run while the loader relocates). "" for none, or for what is not a
+// 64-bit ELF object (the linker judges it).
 std::string runsBeforeFilter(const fs::path& object) {
   std::ifstream in(object, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -179,20 +168,22 @@ std::optional<std::string> readRegularFile(const fs::path& file) {
   return bytes;
 }
 
-// A tool (the compiler, the linker) that the machine, not the code, may have ended: killed by a
-// SIGKILL neither the grader nor its CPU limit sent, stopped at its wall-clock limit (a busy
-// machine), or never started (no process or pipe to be had).
+// A tool the machine, not the code, may have ended: killed by a SIGKILL the grader did not
+// send, stopped at its wall-clock limit (a busy machine), or never started.
 bool endedByTheMachine(const Exit& e, const Limits& limits = defaultCompileLimits()) {
   return e.kind == Exit::Kind::TimedOut || e.kind == Exit::Kind::FailedToStart ||
          killedByTheMachine(e, limits);
 }
-}  // namespace
 
-namespace {
 using ToolRunner = std::function<Exit(const fs::path& dir, std::vector<std::string> argv)>;
 
-// As grader/probe/probe.cmake links: main, the seven objects in task order, the libraries; the
-// result stripped (no symbol table to search for what the framework holds).
+// A link the machine ended is not blamed on an object: it is done again, once.
+Exit linkRetried(const ToolRunner& run, const fs::path& dir, const std::vector<std::string>& argv) {
+  Exit e = run(dir, argv);
+  return endedByTheMachine(e) ? run(dir, argv) : e;
+}
+
+// As probe/probe.cmake links; stripped (no symbol table to search for what the framework holds).
 std::vector<std::string> linkCommand(const Kit& kit, const std::vector<std::string>& main,
                                      const std::vector<fs::path>& objects, const std::string& out) {
   std::vector<std::string> argv = {kit.compiler, "-s", "-o", out};
@@ -202,8 +193,7 @@ std::vector<std::string> linkCommand(const Kit& kit, const std::vector<std::stri
   return argv;
 }
 
-// After a6_probe linked in linkDir: moves it into workDir and links the second probe, the same
-// objects with the reference models' main.
+// After a6_probe linked: moves it into workDir and links the reference models' probe.
 void linkedProbes(const Kit& kit, Build& build, const std::vector<fs::path>& objects,
                   const fs::path& workDir, const ToolRunner& run) {
   std::error_code ec;
@@ -214,9 +204,8 @@ void linkedProbes(const Kit& kit, Build& build, const std::vector<fs::path>& obj
     build.error = "cannot move the linked probe to " + build.probe.string() + ": " + ec.message();
     return;
   }
-  Exit m = run(linkDir, linkCommand(kit, kit.modelsMain, objects, "a6_probe_models"));
-  if (endedByTheMachine(m))
-    m = run(linkDir, linkCommand(kit, kit.modelsMain, objects, "a6_probe_models"));
+  const Exit m =
+      linkRetried(run, linkDir, linkCommand(kit, kit.modelsMain, objects, "a6_probe_models"));
   build.modelsProbe = workDir / "a6_probe_models";
   fs::rename(linkDir / "a6_probe_models", build.modelsProbe, ec);
   if (!m.ok() || ec) {
@@ -226,9 +215,8 @@ void linkedProbes(const Kit& kit, Build& build, const std::vector<fs::path>& obj
   }
 }
 
-// The tasks whose objects a failed link is blamed on, first blamed first: the student objects
-// the linker names (in the order it names them), then those whose starter defines a symbol the
-// linker found undefined.
+// The tasks a failed link is blamed on, first blamed first: the objects the linker names, in
+// its order, then those whose starter defines a symbol the linker found undefined.
 std::vector<std::size_t> blamedForLink(const Kit& kit, const Build& build,
                                        const std::vector<fs::path>& objects,
                                        const std::string& linkerOutput) {
@@ -285,18 +273,15 @@ void useStarterObject(const Kit& kit, Build& build, std::vector<fs::path>& objec
   objects[i] = kit.starterObjects / (stem(task.file) + ".o");
 }
 
-// Links workDir/a6_probe from `objects` (one per task, in task order): a student object that keeps
-// it from linking is replaced by the starter's (its task becomes a LinkError), until it links.
+// Links workDir/a6_probe from `objects` (one per task), replacing a student object that keeps
+// it from linking by the starter's (a LinkError), until it links.
 void linkProbe(const Kit& kit, Build& build, std::vector<fs::path>& objects,
                const fs::path& workDir, const ToolRunner& run) {
   std::error_code ec;
   const fs::path linkDir = workDir / "link";
   const auto linkStart = Clock::now();
   for (;;) {
-    Exit e = run(linkDir, linkCommand(kit, kit.probeMain, objects, "a6_probe"));
-    // A link the machine ended is not blamed on an object: it is done again, once.
-    if (endedByTheMachine(e))
-      e = run(linkDir, linkCommand(kit, kit.probeMain, objects, "a6_probe"));
+    const Exit e = linkRetried(run, linkDir, linkCommand(kit, kit.probeMain, objects, "a6_probe"));
     if (e.ok() && fs::is_regular_file(linkDir / "a6_probe", ec)) {
       linkedProbes(kit, build, objects, workDir, run);
       break;
@@ -331,8 +316,8 @@ bool permits(const struct stat& st, uid_t uid, gid_t gid, unsigned want) {
   return (bits & want) == want;
 }
 
-// The outermost folder on the way to `path` (or `path` itself) that `uid` may not pass, with its
-// mode and owner: "/root/a6/build (mode 0700, owner uid 0)"; "" when the bits allow it all.
+// The outermost folder on the way to `path` (or `path`) that `uid` may not pass, with mode and
+// owner: "/root/a6/build (mode 0700, owner uid 0)"; "" when the bits allow it all.
 std::string whatShutsOut(const fs::path& path, uid_t uid, gid_t gid) {
   fs::path at;
   for (const fs::path& part : path) {
@@ -350,54 +335,14 @@ std::string whatShutsOut(const fs::path& path, uid_t uid, gid_t gid) {
   return "";
 }
 
-}  // namespace
-
-std::string kitUnreadableInSandbox(const Kit& kit, const fs::path& workDir) {
-  if (::geteuid() != 0 || kit.uid == 0) return "";  // the tools run as this user
-  std::vector<std::string> paths;
-  std::error_code ec;
-  const fs::path dir = absoluteClean(kit.dir);
-  paths.push_back(dir.string());
-  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    paths.push_back(it->path().string());
-  }
-  for (const auto* inputs : {&kit.probeMain, &kit.modelsMain, &kit.linkInputs}) {
-    for (const std::string& input : *inputs) paths.push_back(input);
-  }
-  // One shell in the tools' own sandbox and view tries them all: the first it cannot read.
-  std::vector<std::string> argv = {
-      "/bin/sh", "-c",
-      "for p; do if [ -d \"$p\" ]; then [ -r \"$p\" ] && [ -x \"$p\" ]; else [ -r \"$p\" ]; fi "
-      "|| { printf '%s' \"$p\"; exit 3; }; done",
-      "sh"};
-  argv.insert(argv.end(), paths.begin(), paths.end());
-  const fs::path probeDir = absoluteClean(workDir) / "kit-check";
-  const Exit e = runTool(kit, viewOfTools(kit, probeDir, {}, true), probeDir, argv, Limits{});
-  std::error_code rec;
-  fs::remove_all(probeDir, rec);
-  if (e.ok()) return "";
-  if (e.kind != Exit::Kind::Exited || e.code != 3) return "";  // the tools will say what is wrong
-  const std::string culprit = whatShutsOut(e.output, kit.uid, kit.gid);
-  const bool itself = culprit.rfind(e.output + " (", 0) == 0;
-  return "the sandbox's user (uid " + std::to_string(kit.uid) + ") cannot read " +
-         (itself ? culprit : e.output + (culprit.empty() ? "" : ", shut out by " + culprit)) +
-         ": make the grader's build readable by every user (chmod -R a+rX " +
-         (isWithin(fs::path(e.output), dir) ? dir : fs::path(e.output).parent_path()).string() +
-         ", or build it with umask 022), then grade again";
-}
-
-namespace {
-
-// A folder the grader makes that the sandbox's user must reach (rwxr-xr-x), and a file in it
-// that user must read (rw-r--r--).
+// What the grader makes for the sandbox's user: folders it reaches, files it reads.
 constexpr fs::perms kOpenFolder = fs::perms::owner_all | fs::perms::group_read |
                                   fs::perms::group_exec | fs::perms::others_read |
                                   fs::perms::others_exec;
 constexpr fs::perms kReadableFile =
     fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read;
 
-// Makes workDir/obj, open to the sandbox's user (the compiler runs as nobody and must reach
-// it). Returns an error, or "".
+// Makes workDir/obj, open to the sandbox's user. Returns an error, or "".
 std::string makeWorkDir(const fs::path& workDir) {
   std::error_code ec;
   fs::create_directories(workDir / "obj", ec);
@@ -407,8 +352,8 @@ std::string makeWorkDir(const fs::path& workDir) {
   return "";
 }
 
-// One build of one submission's probe: compiles each task file alone (`jobs` at a time), each
-// within what is left of the build's time budget, then links.
+// One build of one submission's probe: each task file compiled alone (`jobs` at a time) within
+// what is left of the build's budget, then the link.
 class ProbeBuilder {
  public:
   ProbeBuilder(const Kit& kit, const Intake& intake, const fs::path& workDir,
@@ -443,8 +388,7 @@ class ProbeBuilder {
     return dirs;
   }
 
-  // Runs the compiler or linker in `dir`, seeing `view`, within what is left of the budget (a
-  // link gets at least kLinkAllowance); the sandbox's notes join the build's, once each.
+  // Runs a tool within what is left of the budget (a link gets at least kLinkAllowance).
   Exit runInBudget(const fs::path& dir, const SandboxView& view, std::vector<std::string> argv) {
     const bool link = dir.filename() == "link";
     Limits limits = compileLimits_;
@@ -455,7 +399,6 @@ class ProbeBuilder {
     return e;
   }
 
-  // A note for the TA (Build::notes), once.
   void addNote(const std::string& note) {
     std::lock_guard<std::mutex> lock(notesMutex_);
     if (std::find(build_.notes.begin(), build_.notes.end(), note) == build_.notes.end()) {
@@ -504,18 +447,16 @@ class ProbeBuilder {
     const fs::path source = absoluteClean(found->second);
     if (useKnownObject(i, source)) return;
     Exit e = runCompiler(i, source);
-    // A compile the grader's side ended (killed by a signal it did not send, a tool that could
-    // not start, the time limit on a busy machine) is done again, once, while the budget lasts:
-    // only a failure that repeats is charged.
+    // A compile the machine ended is done again, once, while the budget lasts: only a failure
+    // that repeats is charged.
     if (endedByTheMachine(e, compileLimits_) && Clock::now() < end_) {
       addNote("the compile of " + task.file + " " + e.describe() + ": it was done again");
       e = runCompiler(i, source);
     }
   }
 
-  // Task i from the kit's prebuilt objects (Kit::knownObjects) when its file is, byte for byte,
-  // a text the grader's own build compiled with the kit's compiler and flags: nothing a
-  // submission wrote is ever shared with another.
+  // Task i from Kit::knownObjects when its file is, byte for byte, a text the grader's build
+  // compiled: nothing a submission wrote is ever shared with another.
   bool useKnownObject(std::size_t i, const fs::path& source) {
     TaskBuild& task = build_.tasks[i];
     if (kit_.knownObjects.empty()) return false;
@@ -539,8 +480,7 @@ class ProbeBuilder {
     return true;
   }
 
-  // Compiles task i's file, `source`, and judges the outcome. The compiler sees its own file
-  // and folder only, and __FILE__ is the file's name alone.
+  // Compiles task i's file and judges the outcome; __FILE__ is the file's name alone.
   Exit runCompiler(std::size_t i, const fs::path& source) {
     TaskBuild& task = build_.tasks[i];
     std::vector<std::string> argv = {kit_.compiler};
@@ -555,10 +495,9 @@ class ProbeBuilder {
     return e;
   }
 
-  // Task i's status and messages from what the compiler did.
   void judge(std::size_t i, const fs::path& source, const Exit& e) {
     TaskBuild& task = build_.tasks[i];
-    // Messages name the file as the student knows it, and the headers as a6/... .
+    // The file named as the student knows it, the headers as a6/... .
     std::string said = replaceAll(e.output, source.parent_path().string() + "/", "");
     said = replaceAll(said, absoluteClean(kit_.dir).string() + "/include/", "");
     task.messages = cap(said, 32u << 10);
@@ -605,32 +544,62 @@ class ProbeBuilder {
   std::mutex notesMutex_;
 };
 
-Build buildProbeUnguarded(const Kit& kit, const Intake& intake, const fs::path& workDirIn,
-                          const Limits& compileLimits, int jobs, double budgetSeconds) {
+}  // namespace
+
+std::string kitUnreadableInSandbox(const Kit& kit, const fs::path& workDir) {
+  if (::geteuid() != 0 || kit.uid == 0) return "";  // the tools run as this user
+  std::vector<std::string> paths;
+  std::error_code ec;
+  const fs::path dir = absoluteClean(kit.dir);
+  paths.push_back(dir.string());
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    paths.push_back(it->path().string());
+  }
+  for (const auto* inputs : {&kit.probeMain, &kit.modelsMain, &kit.linkInputs}) {
+    for (const std::string& input : *inputs) paths.push_back(input);
+  }
+  // One shell in the tools' own sandbox and view tries them all: the first it cannot read.
+  std::vector<std::string> argv = {
+      "/bin/sh", "-c",
+      "for p; do if [ -d \"$p\" ]; then [ -r \"$p\" ] && [ -x \"$p\" ]; else [ -r \"$p\" ]; fi "
+      "|| { printf '%s' \"$p\"; exit 3; }; done",
+      "sh"};
+  argv.insert(argv.end(), paths.begin(), paths.end());
+  const fs::path probeDir = absoluteClean(workDir) / "kit-check";
+  const Exit e = runTool(kit, viewOfTools(kit, probeDir, {}, true), probeDir, argv, Limits{});
+  std::error_code rec;
+  fs::remove_all(probeDir, rec);
+  if (e.ok()) return "";
+  if (e.kind != Exit::Kind::Exited || e.code != 3) return "";  // the tools will say what is wrong
+  const std::string culprit = whatShutsOut(e.output, kit.uid, kit.gid);
+  const bool itself = culprit.rfind(e.output + " (", 0) == 0;
+  return "the sandbox's user (uid " + std::to_string(kit.uid) + ") cannot read " +
+         (itself ? culprit : e.output + (culprit.empty() ? "" : ", shut out by " + culprit)) +
+         ": make the grader's build readable by every user (chmod -R a+rX " +
+         (isWithin(fs::path(e.output), dir) ? dir : fs::path(e.output).parent_path()).string() +
+         ", or build it with umask 022), then grade again";
+}
+
+Build buildProbe(const Kit& kit, const Intake& intake, const fs::path& workDirIn,
+                 const Limits& compileLimits, int jobs, double budgetSeconds) {
   const auto start = Clock::now();
   Build build;
-  const fs::path workDir = absoluteClean(workDirIn);
-  if (!kit.ok()) {
-    build.error = "no grader kit: " + kit.error;
-  } else if (std::string e = makeWorkDir(workDir); !e.empty()) {
-    build.error = e;
-  } else {
-    build = ProbeBuilder(kit, intake, workDir, compileLimits, budgetSeconds).run(jobs);
+  try {
+    const fs::path workDir = absoluteClean(workDirIn);
+    if (!kit.ok()) {
+      build.error = "no grader kit: " + kit.error;
+    } else if (std::string e = makeWorkDir(workDir); !e.empty()) {
+      build.error = e;
+    } else {
+      build = ProbeBuilder(kit, intake, workDir, compileLimits, budgetSeconds).run(jobs);
+    }
+  } catch (const std::exception& e) {
+    Build failed;
+    failed.error = std::string("building the probe failed: ") + e.what();
+    return failed;
   }
   build.seconds = secondsSince(start);
   return build;
-}
-}  // namespace
-
-Build buildProbe(const Kit& kit, const Intake& intake, const fs::path& workDir,
-                 const Limits& compileLimits, int jobs, double budgetSeconds) {
-  try {
-    return buildProbeUnguarded(kit, intake, workDir, compileLimits, jobs, budgetSeconds);
-  } catch (const std::exception& e) {
-    Build build;
-    build.error = std::string("building the probe failed: ") + e.what();
-    return build;
-  }
 }
 
 Build relinkProbe(const Kit& kit, const Build& compiled, const std::set<std::string>& starterFor,

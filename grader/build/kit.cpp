@@ -12,8 +12,7 @@
 #include "harness/task_files.h"
 
 namespace a6::paths {
-extern const char
-    kit_json[];  // BUILD/grader/kit.json (cmake/A6FastBuild.cmake, a6_configured_path)
+extern const char kit_json[];  // BUILD/grader/kit.json (a6_configured_path)
 }  // namespace a6::paths
 
 namespace a6::grader {
@@ -66,8 +65,7 @@ Kit loadKit(const fs::path& kitJson) {
   if (kit.probeMain.empty() || kit.modelsMain.empty()) {
     kit.error = "the grader kit " + kitJson.string() +
                 " names no probe main (the probe targets a6_probe_main, a6_probe_main_models and "
-                "a6_probe_kit were not "
-                "part of the build)" +
+                "a6_probe_kit were not part of the build)" +
                 rebuild;
     return kit;
   }

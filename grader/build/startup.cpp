@@ -15,8 +15,7 @@ const char* const kBeforeMain =
     "Code that runs before main, such as the initializer of a global or static variable, must "
     "not exit, abort, crash or loop.";
 
-// Each compiled file alone among the starter's objects (relinked, never compiled again): the
-// files whose probe does not start, with why.
+// The compiled files whose probe, alone among the starter's objects, does not start, with why.
 std::map<std::string, std::string> culpritsOf(const Kit& kit, const Build& build,
                                               const fs::path& work,
                                               const std::vector<fs::path>& secrets) {
@@ -37,8 +36,8 @@ std::map<std::string, std::string> culpritsOf(const Kit& kit, const Build& build
   return culprits;
 }
 
-// `build` relinked with the starter's objects for the culprits, each culprit's task marked a
-// link error with the reason; false when the relink failed (`build` is then unchanged).
+// `build` relinked with the starter's objects for the culprits (link errors, with the reason);
+// false when the relink failed (`build` is then unchanged).
 bool replaceCulprits(const Kit& kit, Build& build,
                      const std::map<std::string, std::string>& culprits, const fs::path& work) {
   std::set<std::string> starterFor;
