@@ -46,11 +46,15 @@ bool isTaskFile(const std::string& name) {
   return std::find(kTaskFiles.begin(), kTaskFiles.end(), name) != kTaskFiles.end();
 }
 
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// The task file `name` matches when case is ignored (a near miss worth a note), or "".
 std::string nearMissOf(const std::string& name) {
-  auto lower = [](std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-  };
   const std::string l = lower(name);
   for (const std::string& task : kTaskFiles) {
     if (l == task || l == task + ".txt") return task;
@@ -61,8 +65,7 @@ std::string nearMissOf(const std::string& name) {
 bool isNestedArchive(const std::string& name) {
   static const char* const kExtensions[] = {".zip",    ".tar", ".tgz", ".tar.gz", ".tar.bz2",
                                             ".tar.xz", ".gz",  ".7z",  ".rar"};
-  std::string l = name;
-  for (char& c : l) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string l = lower(name);
   for (const char* ext : kExtensions) {
     const std::size_t n = std::strlen(ext);
     if (l.size() > n && l.compare(l.size() - n, n, ext) == 0) return true;
@@ -95,6 +98,8 @@ bool validUtf8(const std::string& s) {
   }
   return true;
 }
+
+}  // namespace
 
 EntryPath splitPath(const std::string& raw) {
   EntryPath p;
@@ -130,6 +135,7 @@ bool better(const Copy& a, const Copy& b) {
   return a.depth != b.depth ? a.depth < b.depth : a.path < b.path;
 }
 
+namespace {
 const char* describe(Kind kind) {
   switch (kind) {
     case Kind::Symlink:
@@ -146,20 +152,14 @@ const char* describe(Kind kind) {
       return "not a regular file";
   }
 }
+}  // namespace
 
 std::string screen(Collector& c, const std::string& raw, const EntryPath& p, Kind kind,
                    const std::string& linkTarget, bool& sawNestedArchive) {
-  const std::string& shown = raw;
-  if (p.absolute) {
-    c.entryNote(shownPath(shown) +
-                ": refused: an absolute path (nothing is ever written "
-                "outside the grader's folder)");
-    return "";
-  }
-  if (p.parent) {
-    c.entryNote(shownPath(shown) +
-                ": refused: the path contains '..' (nothing is ever written "
-                "outside the grader's folder)");
+  if (p.absolute || p.parent) {
+    c.entryNote(shownPath(raw) +
+                ": refused: " + (p.absolute ? "an absolute path" : "the path contains '..'") +
+                " (nothing is ever written outside the grader's folder)");
     return "";
   }
   if (p.parts.empty()) return "";
@@ -167,14 +167,14 @@ std::string screen(Collector& c, const std::string& raw, const EntryPath& p, Kin
   const std::string name = p.name();
   if (kind == Kind::Directory) return "";
   if (static_cast<int>(p.parts.size()) > c.limits().maxDepth) {
-    c.entryNote(shownPath(shown) + ": skipped: " + std::to_string(p.parts.size()) +
+    c.entryNote(shownPath(raw) + ": skipped: " + std::to_string(p.parts.size()) +
                 " levels deep, over the limit of " + std::to_string(c.limits().maxDepth));
     return "";
   }
   if (kind != Kind::Regular) {
-    std::string why = std::string(describe(kind));
+    std::string why = describe(kind);
     if (!linkTarget.empty()) why += " to " + shownPath(linkTarget);
-    c.entryNote(shownPath(shown) + ": refused: " + why +
+    c.entryNote(shownPath(raw) + ": refused: " + why +
                 "; links and special files are never followed" +
                 (isTaskFile(name) ? ": submit the file itself" : ""));
     if (isTaskFile(name)) c.seen(name, joinPath(p.parts));
@@ -183,14 +183,14 @@ std::string screen(Collector& c, const std::string& raw, const EntryPath& p, Kin
   if (isTaskFile(name)) return name;
   if (isNestedArchive(name)) {
     sawNestedArchive = true;
-    c.entryNote(shownPath(shown) +
+    c.entryNote(shownPath(raw) +
                 ": a nested archive, not opened (submit the .cpp files "
                 "themselves, not an archive inside the archive)");
     return "";
   }
   const std::string near = nearMissOf(name);
   if (!near.empty()) {
-    c.entryNote(shownPath(shown) + ": ignored: the name must be exactly '" + near +
+    c.entryNote(shownPath(raw) + ": ignored: the name must be exactly '" + near +
                 "' (names are case-sensitive)");
   }
   return "";

@@ -1,7 +1,6 @@
-// What the intake does with each entry of a submission, archive or folder alike: the checks it
-// goes through (screen), and the Collector that keeps the chosen copy of each task file and the
-// notes, then writes the copies under their own names. Takes entries' paths, kinds and bytes;
-// gives an Intake (intake.h). For intake.cpp only.
+// What the intake does with each entry, archive or folder alike (for intake.cpp only): the
+// checks (screen), and the Collector that keeps the chosen copy of each task file and the notes,
+// then writes the copies under their own names.
 #pragma once
 
 #include <cstddef>
@@ -27,13 +26,6 @@ std::string shownPath(const std::string& path);
 
 bool isTaskFile(const std::string& name);
 
-// The task file `name` matches when case is ignored (a near miss worth a note), or "".
-std::string nearMissOf(const std::string& name);
-
-bool isNestedArchive(const std::string& name);
-
-bool validUtf8(const std::string& s);
-
 // A path inside a submission, split into its components. Both '/' and '\' separate (zips made on
 // Windows sometimes use '\'); empty and '.' components are dropped.
 struct EntryPath {
@@ -56,8 +48,7 @@ struct Copy {
 
 bool better(const Copy& a, const Copy& b);
 
-// What an intake collects while it reads: the chosen copy of each task file, every copy's path
-// (for the duplicate note) and the notes.
+// What an intake collects: the chosen copy of each task file, every copy's path, the notes.
 class Collector {
  public:
   explicit Collector(const IntakeLimits& limits) : limits_(limits) {}
@@ -68,19 +59,18 @@ class Collector {
     if (entryNotes_++ < kMaxEntryNotes) notes_.push_back(std::move(text));
   }
 
-  // Whether a copy of `name` at `path` (depth `depth`) could still win, i.e. is worth reading.
-  // The same path twice (a tarball appended to with tar -r) counts as one copy: the later one,
-  // as extracting it would leave.
+  // Whether a copy of `name` at `path` could still win, i.e. is worth reading. The same path
+  // twice (a tarball appended to with tar -r) is one copy: the later, as extracting would leave.
   bool wanted(const std::string& name, const std::string& path, std::size_t depth) const {
     auto it = chosen_.find(name);
     return it == chosen_.end() || path == it->second.path ||
            better(Copy{path, depth, {}}, it->second);
   }
 
-  // Offers a copy that was read in full; checks its content (a refused copy is noted).
+  // Offers a copy read in full; a refused one is noted.
   void offer(const std::string& name, const std::string& path, std::size_t depth, std::string data);
 
-  // Records that a (usable or not) copy of `name` exists at `path`, for the duplicates note.
+  // A copy of `name`, usable or not, exists at `path` (for the duplicates note).
   void seen(const std::string& name, const std::string& path) { seen_[name].push_back(path); }
 
   // Writes the chosen copies into dest and returns the result.
@@ -94,8 +84,8 @@ class Collector {
   // Creates dest, readable by the sandbox's user. False (with out.error) when it cannot.
   static bool makeDest(const fs::path& dest, Intake& out);
 
-  // Writes one chosen copy to `target`, readable by all; notes text that is not UTF-8.
-  // False (with out.error) when it cannot be written.
+  // Writes a chosen copy, readable by all; notes text that is not UTF-8. False (with out.error)
+  // when it cannot.
   bool write(const fs::path& target, const Copy& copy, Intake& out);
 
   // When `name` was found more than once: which copy was taken and which were not.
@@ -112,13 +102,10 @@ class Collector {
   std::size_t entryNotes_ = 0;
 };
 
-// What an entry is, archive or folder.
 enum class Kind { Regular, Directory, Symlink, Hardlink, Device, Fifo, Socket, Other };
 
-const char* describe(Kind kind);
-
-// The checks every entry goes through, archive or folder (a regular file, safe path, not too
-// deep, named like a task file); refusals noted. Returns the task file name to read, or "".
+// The checks every entry goes through (a regular file, a safe path, not too deep, named like a
+// task file); refusals noted. Returns the task file name to read, or "".
 std::string screen(Collector& c, const std::string& raw, const EntryPath& p, Kind kind,
                    const std::string& linkTarget, bool& sawNestedArchive);
 

@@ -1,20 +1,14 @@
 // Taking a submission in. See intake.h for the contract.
 //
-// Intake notes
-// ------------
-// A submission is untrusted data. We never extract anything: the archive (or the folder) is
-// read entry by entry, only entries whose file name is one of the seven task files are read, into
-// memory, with a size cap, and at the end the chosen copies are written under `dest` with names
-// we choose (the seven known names). Nothing a submission names can make us write elsewhere, so
-// '..', absolute paths, links and devices are only reported, never acted on.
+// Intake notes: a submission is untrusted data, so nothing is extracted. Only entries named as a
+// task file are read, into memory, capped, and the chosen copies are written under `dest` with
+// the known names: nothing a submission names can make us write elsewhere, so '..', absolute
+// paths, links and devices are only reported.
 //
-// Several copies of a task file: the shallowest wins (Gradescope puts the files at the root of
-// the submission, students often zip the folder that holds them); ties go to the path that
-// sorts first, so the result never depends on archive or directory order. A copy that is
-// refused (too large, binary) does not count: the next one is taken, with a note.
-//
-// Zip bombs: an entry's data is read only for task files (at most maxFileBytes each) and an
-// archive stops being read after maxEntries entries or maxTotalBytes of decompressed data.
+// The shallowest copy wins (Gradescope puts the files at the root, students often zip their
+// folder); ties go to the path that sorts first, so that archive or directory order never
+// matters. Zip bombs: only task files' data is read, and reading stops at maxEntries entries or
+// maxTotalBytes decompressed.
 #include "intake/intake.h"
 
 #include <archive.h>
@@ -51,22 +45,21 @@ std::string archiveError(archive* a) {
   return s ? s : "unknown error";
 }
 
-Kind kindOf(archive_entry* e) {
-  if (archive_entry_hardlink(e) != nullptr) return Kind::Hardlink;
-  if (archive_entry_symlink(e) != nullptr) return Kind::Symlink;
-  switch (archive_entry_filetype(e)) {
-    case AE_IFREG:
+// What an entry is, from its mode: an archive's (AE_IF* are the S_IF* values) or lstat's.
+Kind kindOf(mode_t mode) {
+  switch (mode & S_IFMT) {
+    case S_IFREG:
       return Kind::Regular;
-    case AE_IFDIR:
+    case S_IFDIR:
       return Kind::Directory;
-    case AE_IFLNK:
+    case S_IFLNK:
       return Kind::Symlink;
-    case AE_IFCHR:
-    case AE_IFBLK:
+    case S_IFCHR:
+    case S_IFBLK:
       return Kind::Device;
-    case AE_IFIFO:
+    case S_IFIFO:
       return Kind::Fifo;
-    case AE_IFSOCK:
+    case S_IFSOCK:
       return Kind::Socket;
     default:
       return Kind::Other;
@@ -200,12 +193,16 @@ class ArchiveWalk {
     const std::string raw = rawName;
     lastPath_ = raw;
     const EntryPath p = splitPath(raw);
+    Kind kind = kindOf(archive_entry_filetype(e));
     std::string target;
-    if (const char* t = archive_entry_hardlink(e))
+    if (const char* t = archive_entry_hardlink(e)) {
+      kind = Kind::Hardlink;
       target = t;
-    else if (const char* t2 = archive_entry_symlink(e))
+    } else if (const char* t2 = archive_entry_symlink(e)) {
+      kind = Kind::Symlink;
       target = t2;
-    const std::string name = screen(c_, raw, p, kindOf(e), target, sawNested_);
+    }
+    const std::string name = screen(c_, raw, p, kind, target, sawNested_);
     const bool sizeKnown = archive_entry_size_is_set(e) != 0;
     const auto size = static_cast<std::uintmax_t>(std::max<la_int64_t>(0, archive_entry_size(e)));
     if (name.empty()) return skip(raw, zip, sizeKnown, size);
@@ -289,26 +286,6 @@ Intake readArchive(const fs::path& submission, const fs::path& dest, const Intak
 }
 
 // ---- folders (std::filesystem, links never followed) ----
-
-Kind kindOf(fs::file_type t) {
-  switch (t) {
-    case fs::file_type::regular:
-      return Kind::Regular;
-    case fs::file_type::directory:
-      return Kind::Directory;
-    case fs::file_type::symlink:
-      return Kind::Symlink;
-    case fs::file_type::block:
-    case fs::file_type::character:
-      return Kind::Device;
-    case fs::file_type::fifo:
-      return Kind::Fifo;
-    case fs::file_type::socket:
-      return Kind::Socket;
-    default:
-      return Kind::Other;
-  }
-}
 
 // Reads a regular file without following a link at its name, at most `cap` + 1 bytes.
 std::optional<std::string> readNoFollow(const fs::path& path, std::size_t cap, std::string& why) {
@@ -409,10 +386,8 @@ Intake readFolder(const fs::path& root, const fs::path& dest, const IntakeLimits
   const fs::path destAbs = fs::weakly_canonical(dest, ec);
   fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec);
   if (ec) {
-    Intake out;
-    out.error = "cannot read the submission folder " + root.string() + ": " + ec.message() +
-                " (check that it exists and is readable)";
-    return out;
+    return refused("cannot read the submission folder " + root.string() + ": " + ec.message() +
+                   " (check that it exists and is readable)");
   }
   for (; it != fs::recursive_directory_iterator(); it.increment(ec)) {
     if (folderWalkEnds(c, ec, ++entries, limits)) break;
@@ -420,11 +395,12 @@ Intake readFolder(const fs::path& root, const fs::path& dest, const IntakeLimits
     const fs::path path = it->path();
     const std::string rel = path.lexically_relative(root).generic_string();
     const EntryPath p = splitPath(rel);
-    std::error_code sec;
-    const Kind kind = kindOf(fs::symlink_status(path, sec).type());
+    struct stat st {};
+    const Kind kind = ::lstat(path.c_str(), &st) == 0 ? kindOf(st.st_mode) : Kind::Other;
     if (kind == Kind::Directory && !looksInto(c, it, destAbs, rel, p.parts.size(), limits)) {
       continue;
     }
+    std::error_code sec;
     const std::string target =
         kind == Kind::Symlink ? fs::read_symlink(path, sec).string() : std::string();
     const std::string name = screen(c, rel, p, kind, target, sawNested);
@@ -442,24 +418,17 @@ Intake takeSubmission(const std::filesystem::path& submission, const std::filesy
     // The submission path itself comes from the TA: follow it if it is a link.
     const fs::file_status st = fs::status(submission, ec);
     if (ec || st.type() == fs::file_type::not_found) {
-      Intake out;
-      out.error = "the submission " + submission.string() + " does not exist" +
-                  (ec && ec != std::errc::no_such_file_or_directory ? " (" + ec.message() + ")"
-                                                                    : std::string()) +
-                  "; check the path";
-      return out;
+      return refused("the submission " + submission.string() + " does not exist" +
+                     (ec && ec != std::errc::no_such_file_or_directory ? " (" + ec.message() + ")"
+                                                                       : std::string()) +
+                     "; check the path");
     }
     if (st.type() == fs::file_type::directory) return readFolder(submission, dest, limits);
     if (st.type() == fs::file_type::regular) return readArchive(submission, dest, limits);
-    Intake out;
-    out.error = "the submission " + submission.string() +
-                " is neither a folder nor a regular file (an archive); check the path";
-    return out;
+    return refused("the submission " + submission.string() +
+                   " is neither a folder nor a regular file (an archive); check the path");
   } catch (const std::exception& e) {
-    Intake out;
-    out.error =
-        std::string("reading the submission ") + submission.string() + " failed: " + e.what();
-    return out;
+    return refused("reading the submission " + submission.string() + " failed: " + e.what());
   }
 }
 
