@@ -11,9 +11,38 @@ namespace fs = std::filesystem;
 namespace a6::grader {
 namespace {
 
+// How long a probe may take to reach main and answer a request that runs no student code, s.
+constexpr double kStartupSeconds = 5;
+
 const char* const kBeforeMain =
     "Code that runs before main, such as the initializer of a global or static variable, must "
     "not exit, abort, crash or loop.";
+
+// "" when `probe` answers, twice, a request that runs no student code (an invalid frame,
+// refused before any scene is made); otherwise why not (it crashed, exited or hung).
+std::string startupFailure(const fs::path& probe, const fs::path& runDir,
+                           const std::vector<fs::path>& secrets, uid_t uid, gid_t gid) {
+  ProbeClient client(probe, runDir, Limits{});
+  const SandboxView view = probeView(secrets);
+  client.setHidden(view.hide, view.reveal);
+  client.setUser(uid, gid);
+  client.setRequestTimeout(kStartupSeconds);
+  client.setMaxStarts(1);
+  harness::SceneRequest ping;
+  ping.frames = {-1};
+  for (int k = 0; k < 2; ++k) {
+    const harness::SceneResult r = client.ask(ping);
+    if (r.fault == harness::Fault::Refused) continue;  // main runs, and refused the frame
+    if (r.fault == harness::Fault::TimedOut) {
+      std::ostringstream out;
+      out << "it did not reach main within " << kStartupSeconds << " s (is there an endless "
+          << "loop in code that runs before main, such as a static initializer?)";
+      return out.str();
+    }
+    return r.error.empty() ? "it answered a request it must refuse" : r.error;
+  }
+  return "";
+}
 
 // The compiled files whose probe, alone among the starter's objects, does not start, with why.
 std::map<std::string, std::string> culpritsOf(const Kit& kit, const Build& build,
@@ -61,30 +90,6 @@ bool replaceCulprits(const Kit& kit, Build& build,
 }
 
 }  // namespace
-
-std::string startupFailure(const fs::path& probe, const fs::path& runDir,
-                           const std::vector<fs::path>& secrets, uid_t uid, gid_t gid) {
-  ProbeClient client(probe, runDir, Limits{});
-  const SandboxView view = probeView(secrets);
-  client.setHidden(view.hide, view.reveal);
-  client.setUser(uid, gid);
-  client.setRequestTimeout(kStartupSeconds);
-  client.setMaxStarts(1);
-  harness::SceneRequest ping;
-  ping.frames = {-1};
-  for (int k = 0; k < 2; ++k) {
-    const harness::SceneResult r = client.ask(ping);
-    if (r.fault == harness::Fault::Refused) continue;  // main runs, and refused the frame
-    if (r.fault == harness::Fault::TimedOut) {
-      std::ostringstream out;
-      out << "it did not reach main within " << kStartupSeconds << " s (is there an endless "
-          << "loop in code that runs before main, such as a static initializer?)";
-      return out.str();
-    }
-    return r.error.empty() ? "it answered a request it must refuse" : r.error;
-  }
-  return "";
-}
 
 std::string ensureProbeStarts(const Kit& kit, Build& build, const fs::path& work,
                               const std::vector<fs::path>& secrets) {

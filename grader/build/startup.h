@@ -12,14 +12,6 @@
 
 namespace a6::grader {
 
-/// How long a probe may take to reach main and answer a request that runs no student code, s.
-constexpr double kStartupSeconds = 5;
-
-/// "" when `probe` answers, twice, a request that runs no student code (an invalid frame,
-/// refused before any scene is made); otherwise why not (it crashed, exited or hung).
-std::string startupFailure(const std::filesystem::path& probe, const std::filesystem::path& runDir,
-                           const std::vector<std::filesystem::path>& secrets, uid_t uid, gid_t gid);
-
 /// Checks that `build`'s probe starts, relinking it with the starter's objects for the files
 /// that keep it from starting. Returns why no probe can serve at all, or "".
 std::string ensureProbeStarts(const Kit& kit, Build& build, const std::filesystem::path& work,

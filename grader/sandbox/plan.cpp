@@ -245,82 +245,65 @@ std::string planFds(const SandboxSpec& spec, Plan& plan) {
   return "";
 }
 
-// The sentence for a failed isolating step (mounts, network, seccomp); "" for the others.
-std::string describeIsolationStep(const Record& r, const Plan& plan) {
-  const std::string err = errnoText(r.err);
-  const bool hasOp = r.index >= 0 && static_cast<std::size_t>(r.index) < plan.ops.size();
-  const std::string opPath = hasOp ? plan.ops[r.index].path : std::string();
+// What a failed step says: `before`, its subject (subjectOf), `after`, the errno's text, `end`.
+struct Sentence {
+  const char* before;
+  const char* after;
+  const char* end = "";
+};
+
+const std::map<int, Sentence> kSentences = {
+    {kSetsid, {"setsid", ": "}},
+    {kUnshareMounts,
+     {"could not hide the grader's files (unshare(CLONE_NEWNS)", ": ",
+      "): only file permissions protect them"}},
+    {kMountPrivate,
+     {"could not hide the grader's files (making / private", ": ",
+      "): only file permissions protect them"}},
+    {kHide, {"could not hide ", " (mount: ", ")"}},
+    {kReveal, {"could not keep ", " visible under a hidden path: "}},
+    {kUnshareNet,
+     {"no network namespace (unshare(CLONE_NEWNET)", ": ",
+      "): sockets are refused by the seccomp filter only"}},
+    {kDevNull, {"opening /dev/null", ": "}},
+    {kFds, {"passing file descriptors", ": "}},
+    {kRlimit, {"setting ", ": "}},
+    {kChdir, {"entering the work dir ", ": "}},
+    {kSetgroups, {"dropping supplementary groups", ": "}},
+    {kSetgid, {"switching to gid ", ": "}},
+    {kSetuid, {"switching to uid ", ": "}},
+    {kDeathSignal, {"setting the parent-death signal", ": "}},
+    {kNoNewPrivs, {"setting no_new_privs", ": "}},
+    {kSeccomp, {"could not install the seccomp filter (", "", "): sockets are not refused"}},
+    {kExec, {"exec ", ": "}},
+    {kWorkTmpfs, {"mounting a tmpfs on the work dir ", ": "}},
+    {kProc,
+     {"could not mount the pid namespace's own /proc (", "",
+      "): the code sees the machine's processes in /proc (it still cannot signal them)"}},
+    {kFork, {"starting the program in its pid namespace (fork)", ": "}},
+};
+
+// What the step failed on: the path, the limit, the work dir, the id, the program; or "".
+std::string subjectOf(const Record& r, const Plan& plan, const SandboxSpec& spec) {
+  const auto at = static_cast<std::size_t>(r.index);
   switch (r.stage) {
-    case kUnshareMounts:
-      return "could not hide the grader's files (unshare(CLONE_NEWNS): " + err +
-             "): only file permissions protect them";
-    case kMountPrivate:
-      return "could not hide the grader's files (making / private: " + err +
-             "): only file permissions protect them";
     case kHide:
-      return "could not hide " + opPath + " (mount: " + err + ")";
     case kReveal:
-      return "could not keep " + opPath + " visible under a hidden path: " + err;
-    case kUnshareNet:
-      return "no network namespace (unshare(CLONE_NEWNET): " + err +
-             "): sockets are refused by the seccomp filter only";
+      return r.index >= 0 && at < plan.ops.size() ? plan.ops[at].path : "";
+    case kRlimit:
+      return r.index >= 0 && at < plan.limits.size() ? limitName(plan.limits[at].resource)
+                                                     : "an rlimit";
+    case kChdir:
     case kWorkTmpfs:
-      return "mounting a tmpfs on the work dir " + plan.workDir + ": " + err;
-    case kProc:
-      return "could not mount the pid namespace's own /proc (" + err +
-             "): the code sees the machine's processes in /proc (it still cannot signal them)";
-    case kSeccomp:
-      return "could not install the seccomp filter (" + err + "): sockets are not refused";
+      return plan.workDir;
+    case kSetgid:
+      return std::to_string(plan.gid);
+    case kSetuid:
+      return std::to_string(plan.uid);
+    case kExec:
+      return spec.argv[0];
     default:
       return "";
-  }
-}
-
-// The sentence for a failed exec, with the likely cause when it runs as another user.
-std::string describeExec(const Record& r, const Plan& plan, const SandboxSpec& spec) {
-  std::string text = "exec " + spec.argv[0] + ": " + errnoText(r.err);
-  if (r.err == EACCES && plan.dropPrivileges) {
-    text += " (it runs as uid " + std::to_string(plan.uid) +
-            ": the program and every folder above it must be readable and searchable by "
-            "other users)";
-  }
-  return text;
-}
-
-// The sentence for a failed step that sets up the process (session, fds, limits, identity).
-std::string describeProcessStep(const Record& r, const Plan& plan, const SandboxSpec& spec) {
-  const std::string err = errnoText(r.err);
-  switch (r.stage) {
-    case kSetsid:
-      return "setsid: " + err;
-    case kDevNull:
-      return "opening /dev/null: " + err;
-    case kFds:
-      return "passing file descriptors: " + err;
-    case kRlimit:
-      return std::string("setting ") +
-             (r.index >= 0 && static_cast<std::size_t>(r.index) < plan.limits.size()
-                  ? limitName(plan.limits[r.index].resource)
-                  : "an rlimit") +
-             ": " + err;
-    case kChdir:
-      return "entering the work dir " + plan.workDir + ": " + err;
-    case kSetgroups:
-      return "dropping supplementary groups: " + err;
-    case kSetgid:
-      return "switching to gid " + std::to_string(plan.gid) + ": " + err;
-    case kSetuid:
-      return "switching to uid " + std::to_string(plan.uid) + ": " + err;
-    case kDeathSignal:
-      return "setting the parent-death signal: " + err;
-    case kNoNewPrivs:
-      return "setting no_new_privs: " + err;
-    case kExec:
-      return describeExec(r, plan, spec);
-    case kFork:
-      return "starting the program in its pid namespace (fork): " + err;
-    default:
-      return "unknown setup stage " + std::to_string(r.stage) + ": " + err;
   }
 }
 
@@ -349,8 +332,19 @@ std::string makePlan(const SandboxSpec& spec, Plan& plan) {
 }
 
 std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec& spec) {
-  if (std::string text = describeIsolationStep(r, plan); !text.empty()) return text;
-  return describeProcessStep(r, plan, spec);
+  const std::string err = errnoText(r.err);
+  const auto sentence = kSentences.find(r.stage);
+  if (sentence == kSentences.end()) {
+    return "unknown setup stage " + std::to_string(r.stage) + ": " + err;
+  }
+  const Sentence& s = sentence->second;
+  std::string text = s.before + subjectOf(r, plan, spec) + s.after + err + s.end;
+  if (r.stage == kExec && r.err == EACCES && plan.dropPrivileges) {
+    text += " (it runs as uid " + std::to_string(plan.uid) +
+            ": the program and every folder above it must be readable and searchable by "
+            "other users)";
+  }
+  return text;
 }
 
 }  // namespace a6::grader::sandboxing

@@ -262,6 +262,28 @@ bool readUntilEnd(pid_t pid, int outFd, Clock::time_point deadline, Sink& sink, 
   return ended;
 }
 
+// Adds to `out` what to hide so that only the `keep` paths of `secret` can be read: the secret
+// itself, or its other entries level by level down to what is kept.
+void hideExcept(const fs::path& secret, const std::vector<fs::path>& keep,
+                std::vector<fs::path>& out, int depth = 0) {
+  std::vector<fs::path> inside;
+  for (const fs::path& k : keep) {
+    if (isWithin(secret, k)) return;  // the secret lies inside something kept visible
+    if (isWithin(k, secret)) inside.push_back(k);
+  }
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(secret, ec);
+  // A link is not covered (that would cover its target, a secret of its own or harmless).
+  if (ec || !fs::exists(st) || fs::is_symlink(st)) return;
+  if (inside.empty() || !fs::is_directory(st) || depth > 64) {
+    out.push_back(secret);
+    return;
+  }
+  for (fs::directory_iterator it(secret, ec), end; !ec && it != end; it.increment(ec)) {
+    hideExcept(it->path(), inside, out, depth + 1);
+  }
+}
+
 }  // namespace
 
 std::string Exit::describe() const {
@@ -421,26 +443,6 @@ bool isWithin(const std::filesystem::path& inner, const std::filesystem::path& o
     if (i == inner.end() || *i != *o) return false;
   }
   return true;
-}
-
-void hideExcept(const std::filesystem::path& secret, const std::vector<std::filesystem::path>& keep,
-                std::vector<std::filesystem::path>& out, int depth) {
-  std::vector<fs::path> inside;
-  for (const fs::path& k : keep) {
-    if (isWithin(secret, k)) return;  // the secret lies inside something kept visible
-    if (isWithin(k, secret)) inside.push_back(k);
-  }
-  std::error_code ec;
-  const fs::file_status st = fs::symlink_status(secret, ec);
-  // A link is not covered (that would cover its target, a secret of its own or harmless).
-  if (ec || !fs::exists(st) || fs::is_symlink(st)) return;
-  if (inside.empty() || !fs::is_directory(st) || depth > 64) {
-    out.push_back(secret);
-    return;
-  }
-  for (fs::directory_iterator it(secret, ec), end; !ec && it != end; it.increment(ec)) {
-    hideExcept(it->path(), inside, out, depth + 1);
-  }
 }
 
 SandboxView allowOnly(const std::vector<std::filesystem::path>& visible,

@@ -94,8 +94,6 @@ class SandboxedProcess {
   SandboxedProcess& operator=(const SandboxedProcess&) = delete;
 
   const std::string& error() const { return error_; }
-  /// The child the grader started and kills: the program, or in a pid namespace its keeper.
-  pid_t pid() const { return pid_; }
   /// The program's own pid, to inspect it in /proc (-1 when gone or not found).
   pid_t programPid();
   /// False once it has exited (unreaped until stop(), so its pid and group are not reused).
@@ -128,10 +126,5 @@ SandboxView allowOnly(const std::vector<std::filesystem::path>& visible,
 
 /// True when `inner` is `outer` or lies inside it (both absolute and lexically normal).
 bool isWithin(const std::filesystem::path& inner, const std::filesystem::path& outer);
-
-/// Adds to `out` what to hide so that only the `keep` paths of `secret` can be read: the secret
-/// itself, or its other entries level by level down to what is kept. Links are not covered.
-void hideExcept(const std::filesystem::path& secret, const std::vector<std::filesystem::path>& keep,
-                std::vector<std::filesystem::path>& out, int depth = 0);
 
 }  // namespace a6::grader
