@@ -32,11 +32,8 @@ target_compile_options(a6_build PRIVATE ${A6_WARNINGS})
 
 # The student API headers, staged alone (the compiler gets -I to this folder only).
 file(GLOB A6_KIT_HEADERS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/framework/include/a6/*.h)
-set(staged_headers "")
-foreach(header IN LISTS A6_KIT_HEADERS)
-  get_filename_component(name ${header} NAME)
-  list(APPEND staged_headers ${A6_KIT_DIR}/include/a6/${name})
-endforeach()
+set(staged_headers ${A6_KIT_HEADERS})
+list(TRANSFORM staged_headers REPLACE "^.*/" "${A6_KIT_DIR}/include/a6/")
 add_custom_command(
   OUTPUT ${staged_headers}
   COMMAND ${CMAKE_COMMAND} -E rm -rf ${A6_KIT_DIR}/include

@@ -27,7 +27,6 @@
 #include <optional>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <system_error>
 #include <thread>
 

@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -105,8 +104,8 @@ Intake refused(std::string why) {
   return out;
 }
 
-// One pass over an open archive's entries, within the limits: each entry read by step(), which
-// says whether to go on; the task files offered to the Collector, the rest noted.
+// One pass over an open archive's entries, within the limits: step() takes one entry and says
+// whether to go on.
 class ArchiveWalk {
  public:
   ArchiveWalk(archive* a, const fs::path& submission, const IntakeLimits& limits)
@@ -124,15 +123,12 @@ class ArchiveWalk {
                        "re-create the archive and submit it again)");
       }
       c_.note(damage_ +
-              "; reading stopped there and only the task files read before that point "
-              "are used");
+              "; reading stopped there and only the task files read before that point are used");
     }
     return c_.finish(dest, "archive", anyEntries_, sawNested_);
   }
 
  private:
-  enum class Data { Read, TooLarge, Failed };
-
   // Bytes the archive has made us decompress so far (zip skips entries by seeking).
   std::size_t consumed(bool zip) const {
     return zip ? readBytes_ : static_cast<std::size_t>(archive_filter_bytes(a_, 0));
@@ -225,43 +221,32 @@ class ArchiveWalk {
     if (zip || !sizeKnown || consumed(zip) + size <= limits_.maxTotalBytes) return true;
     c_.note(shownPath(raw) + " holds " + humanBytes(size) + ": reading stopped there, over the " +
             humanBytes(limits_.maxTotalBytes) +
-            " limit for a whole submission; entries "
-            "after it were not looked at");
+            " limit for a whole submission; entries after it were not looked at");
     return false;
   }
 
+  // Reads the entry's data, never more than the cap (a zip's declared size may lie), and offers
+  // it; false when the archive is damaged there.
   bool read(const std::string& raw, const std::string& name, const std::string& rel,
             std::size_t depth) {
     std::string data;
-    switch (readData(data)) {
-      case Data::Failed:
+    char buf[16 << 10];
+    for (la_ssize_t n; (n = archive_read_data(a_, buf, sizeof buf)) != 0;) {
+      if (n == ARCHIVE_WARN || n == ARCHIVE_RETRY) continue;
+      if (n < 0) {
         damage_ = "the archive is damaged: the data of " + shownPath(raw) + " cannot be read (" +
                   archiveError(a_) + ")";
         return false;
-      case Data::TooLarge:
+      }
+      readBytes_ += static_cast<std::size_t>(n);
+      if (data.size() + static_cast<std::size_t>(n) > limits_.maxFileBytes) {
         c_.entryNote(tooLarge(raw, limits_.maxFileBytes, limits_, true));
         return true;
-      case Data::Read:
-        break;
+      }
+      data.append(buf, static_cast<std::size_t>(n));
     }
     c_.offer(name, rel, depth, std::move(data));
     return true;
-  }
-
-  // The current entry's data, never more than the cap (a zip's declared size may lie).
-  Data readData(std::string& data) {
-    char buf[16 << 10];
-    for (;;) {
-      const la_ssize_t n = archive_read_data(a_, buf, sizeof buf);
-      if (n == 0) return Data::Read;
-      if (n < 0) {
-        if (n == ARCHIVE_WARN || n == ARCHIVE_RETRY) continue;
-        return Data::Failed;
-      }
-      readBytes_ += static_cast<std::size_t>(n);
-      if (data.size() + static_cast<std::size_t>(n) > limits_.maxFileBytes) return Data::TooLarge;
-      data.append(buf, static_cast<std::size_t>(n));
-    }
   }
 
   archive* a_;
@@ -294,32 +279,28 @@ std::optional<std::string> readNoFollow(const fs::path& path, std::size_t cap, s
     why = std::strerror(errno);
     return std::nullopt;
   }
+  std::optional<std::string> data;
   struct stat st {};
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    ::close(fd);
     why = "not a regular file";
-    return std::nullopt;
-  }
-  std::string data;
-  char buf[16 << 10];
-  for (;;) {
-    const ssize_t n = ::read(fd, buf, sizeof buf);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      why = std::strerror(errno);
-      ::close(fd);
-      return std::nullopt;
+  } else {
+    data.emplace();
+    char buf[16 << 10];
+    for (ssize_t n; data->size() <= cap && (n = ::read(fd, buf, sizeof buf)) != 0;) {
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) {
+        why = std::strerror(errno);
+        data.reset();
+        break;
+      }
+      data->append(buf, static_cast<std::size_t>(n));
     }
-    if (n == 0) break;
-    data.append(buf, static_cast<std::size_t>(n));
-    if (data.size() > cap) break;
   }
   ::close(fd);
   return data;
 }
 
-// Whether the walk of a folder stops before its next entry (a read error, or the entry limit),
-// with the note saying why.
+// Whether the walk of a folder stops before its next entry (a read error, the limit), noted.
 bool folderWalkEnds(Collector& c, const std::error_code& ec, std::size_t entries,
                     const IntakeLimits& limits) {
   if (ec) {
@@ -329,8 +310,7 @@ bool folderWalkEnds(Collector& c, const std::error_code& ec, std::size_t entries
   }
   if (entries > limits.maxEntries) {
     c.note("reading stopped after " + std::to_string(limits.maxEntries) +
-           " entries (the limit): the folder holds too many files; the rest was not looked "
-           "at");
+           " entries (the limit): the folder holds too many files; the rest was not looked at");
     return true;
   }
   return false;

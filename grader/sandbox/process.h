@@ -1,23 +1,17 @@
 // The process layer under the sandbox, a6_grade and a6_batch: waiting for one child with a
-// deadline, ending strays and a sandbox user's processes, claiming a sandbox user. Takes pids and
-// uids; gives facts read from /proc, and processes ended.
+// deadline, ending strays and a sandbox user's processes, claiming a sandbox user.
 //
-// Design note: reap only what you own. A child subreaper inherits what its sandboxed children
-// leave, but never reaps with waitpid(-1): that also takes a child another part of the grader
-// waits for (a6_batch hung on an a6_grade reaped that way). Every wait names its pid.
-//
-// Design note: a grading ends only what it started. Other graders may share the machine's uids
-// (another checkout, a chroot, a container with its own /run). Each sandboxed command has its
-// own pid namespace, so what the code leaves running ends with it and nothing searches the
-// machine for processes to kill; only where pid namespaces are refused (no CAP_SYS_ADMIN) are
-// the sandbox user's processes found by uid and ended, and the notes say so.
-//
-// Design note: a sandbox user per grading, unused machine-wide. RLIMIT_NPROC counts a user's
-// processes machine-wide and file access is per user, so each grading claims a uid drawn at
-// random far above any account (1e6 to 2e9 where every uid is mapped, else the mapped range's
-// top), with no account, no process in /proc, and a lock file (for graders sharing /run/lock).
-// Two graders that see neither (two containers) collide with a chance of about 1 in 2e9.
-// Processes are found by the uid in /proc/PID/status, never by name or parent.
+// Design notes. Reap only what you own: a child subreaper never reaps with waitpid(-1), which
+// also takes a child another part of the grader waits for (a6_batch hung on an a6_grade reaped
+// that way); every wait names its pid.
+// A grading ends only what it started: other graders may share the machine's uids, so each
+// sandboxed command has its own pid namespace and nothing searches the machine for processes to
+// kill; only where pid namespaces are refused are a sandbox user's processes ended by uid.
+// A sandbox user per grading, unused machine-wide: RLIMIT_NPROC counts a user's processes
+// machine-wide, so each grading claims a random uid far above any account (1e6 to 2e9 where
+// every uid is mapped), with no account, no process in /proc and a lock file; graders that see
+// neither (two containers) collide with a chance of about 1 in 2e9. Processes are found by the
+// uid in /proc/PID/status, never by name or parent.
 #pragma once
 
 #include <sys/types.h>
