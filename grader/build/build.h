@@ -20,13 +20,10 @@ struct Kit {
   std::string compiler;                   ///< absolute path of the C++ compiler
   std::vector<std::string> compileFlags;  ///< pinned: -std=c++17 -O2 -ffp-contract=off -I...
   std::vector<std::string> probeMain;     ///< the probe's main object(s), linked first
-  std::vector<std::string> modelsMain;    ///< the main that asks the grader for the reference
-                                          ///< forces (Build::modelsProbe)
+  std::vector<std::string> modelsMain;    ///< the main asking the grader for reference forces
   std::vector<std::string> linkInputs;    ///< after the task objects: the probe kit, Box2D, ...
-  std::filesystem::path starterObjects;   ///< the starter's <task>.o and <task>.syms (its
-                                          ///< defined symbols, demangled)
-  std::filesystem::path knownObjects;     ///< <task>.cpp and <task>.o the grader's build compiled
-                                          ///< (the solution's), "" for none; hidden from tools
+  std::filesystem::path starterObjects;   ///< the starter's <task>.o and .syms (its symbols)
+  std::filesystem::path knownObjects;     ///< the solution's <task>.cpp and .o; hidden, or ""
   std::filesystem::path dir;              ///< the kit folder: staged headers, starter objects
   /// Hidden from the tools but for `dir`, the work folder and the student's files: the
   /// repository and the build tree; a caller may add more (a batch's other submissions).
@@ -67,10 +64,8 @@ struct TaskBuild {
 
 struct Build {
   std::string error;                  ///< the probe could not be linked at all
-  std::filesystem::path probe;        ///< workDir/a6_probe: serves every request, holds no
-                                      ///< reference model
-  std::filesystem::path modelsProbe;  ///< workDir/a6_probe_models: asks the grader for the
-                                      ///< reference forces, for the requests that use them
+  std::filesystem::path probe;        ///< workDir/a6_probe, holding no reference model
+  std::filesystem::path modelsProbe;  ///< workDir/a6_probe_models: gets the reference forces
   std::vector<TaskBuild> tasks;       ///< in task order
   double seconds = 0;                 ///< compiling and linking, wall clock
   double linkSeconds = 0;             ///< of which linking (all attempts)

@@ -77,8 +77,8 @@ Report readReport(int fd, Clock::time_point deadline, Record& r) {
   return Report::Got;
 }
 
-// Reads the child's setup reports until it runs the program: a fatal report (or silence for
-// 30 s) becomes s.error and returns false; the others become notes.
+// The child's setup reports until it runs the program: a fatal one (or 30 s of silence) is
+// s.error (false), the others notes.
 bool awaitExec(int statusFd, const Plan& plan, const SandboxSpec& spec, Started& s) {
   const auto deadline = Clock::now() + std::chrono::seconds(30);
   bool started = true;
@@ -113,9 +113,8 @@ std::string openPipes(int (&pipes)[3][2]) {
   return "";
 }
 
-// Kills the whole group (the child stays unreaped until then, so its pgid is not reused) and
-// reaps the child. `cpuSeconds`, when given, receives the CPU time the child and what it reaped
-// used (in a pid namespace, the keeper reaped the program: its time is in there).
+// Kills the whole group (the child, unreaped until then, keeps its pgid from reuse) and reaps
+// the child; `cpuSeconds` gets its CPU time and its reaped children's (the keeper's program).
 int killAndReap(pid_t pid, double* cpuSeconds = nullptr) {
   kill(-pid, SIGKILL);
   kill(pid, SIGKILL);
@@ -241,8 +240,8 @@ const char* signalText(int sig) {
   return it == kTexts.end() ? nullptr : it->second;
 }
 
-// Reads the child's output until the child ends (true) or `deadline` passes (false, the child
-// still running); `outOpen` says whether its pipe is still open.
+// Reads the child's output until it ends (true) or `deadline` passes (false); `outOpen` says
+// whether its pipe is still open.
 bool readUntilEnd(pid_t pid, int outFd, Clock::time_point deadline, Sink& sink, bool& outOpen) {
   const int pidFd = static_cast<int>(syscall(SYS_pidfd_open, pid, 0));
   bool ended = false;

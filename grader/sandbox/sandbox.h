@@ -70,8 +70,8 @@ struct SandboxSpec {
   std::vector<std::string> env = {"PATH=/usr/bin:/bin"};  ///< the whole environment
   std::vector<std::pair<int, int>> mapFds;    ///< {parent fd, child fd} (the probe's 3 and 4)
   std::vector<std::filesystem::path> hide;    ///< paths the child must not be able to read
-  std::vector<std::filesystem::path> reveal;  ///< visible inside hidden ones (as are the work
-                                              ///< dir and argv[0])
+  std::vector<std::filesystem::path> reveal;  ///< visible inside hidden ones, as workDir and
+                                              ///< argv[0] always are
   std::size_t workDirTmpfsBytes = 0;  ///< > 0: the work dir is a tmpfs of this size (as root)
   uid_t uid = 65534;                  ///< who the child runs as when the grader is root
   gid_t gid = 65534;                  ///< (nobody / nogroup)
