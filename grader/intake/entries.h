@@ -39,7 +39,6 @@ EntryPath splitPath(const std::string& raw);
 
 std::string joinPath(const std::vector<std::string>& parts);
 
-// One copy of a task file found in the submission.
 struct Copy {
   std::string path;   // as found, '/'-separated, relative to the submission
   std::size_t depth;  // number of components
@@ -73,7 +72,6 @@ class Collector {
   // A copy of `name`, usable or not, exists at `path` (for the duplicates note).
   void seen(const std::string& name, const std::string& path) { seen_[name].push_back(path); }
 
-  // Writes the chosen copies into dest and returns the result.
   Intake finish(const fs::path& dest, const std::string& what, bool anyEntries,
                 bool sawNestedArchive);
 
@@ -84,11 +82,10 @@ class Collector {
   // Creates dest, readable by the sandbox's user. False (with out.error) when it cannot.
   static bool makeDest(const fs::path& dest, Intake& out);
 
-  // Writes a chosen copy, readable by all; notes text that is not UTF-8. False (with out.error)
-  // when it cannot.
+  // Readable by all; notes text that is not UTF-8. False (with out.error) when it cannot.
   bool write(const fs::path& target, const Copy& copy, Intake& out);
 
-  // When `name` was found more than once: which copy was taken and which were not.
+  // Which copy of `name` was taken and which were not, when there were several.
   void noteDuplicates(const std::string& name, const std::string& taken);
 
   // The notes about the whole submission: skipped entries not listed, nothing found.

@@ -306,41 +306,37 @@ UidClaim& UidClaim::operator=(UidClaim&& other) noexcept {
 }
 
 UidClaim claimUid(std::optional<uid_t> wanted, std::string& error) {
+  const auto fail = [&error](std::string why) {
+    error = std::move(why);
+    return UidClaim{};
+  };
+  if (geteuid() != 0)
+    return fail("not root: the sandbox runs as this user, with no user of its own");
   UidClaim claim;
-  if (geteuid() != 0) {
-    error = "not root: the sandbox runs as this user, with no user of its own";
-    return claim;
-  }
   if (wanted) {
-    if (*wanted == 0) {
-      error = "the sandbox user cannot be root";
-      return claim;
-    }
+    if (*wanted == 0) return fail("the sandbox user cannot be root");
     const auto start = Clock::now();
     while ((claim.fd_ = lockUid(*wanted)) < 0 && secondsSince(start) < 60) pause(100);
     if (claim.fd_ < 0) {
-      error = "another grading has held sandbox uid " + std::to_string(*wanted) + " for a minute";
-      return claim;
+      return fail("another grading has held sandbox uid " + std::to_string(*wanted) +
+                  " for a minute");
     }
     claim.uid_ = *wanted;
     // Its processes are not ours to end, unless no pid namespace ends what each sandbox starts.
     if (pidNamespaces()) {
       if (inUse(*wanted, all())) {
-        error = "sandbox uid " + std::to_string(*wanted) +
-                " is in use by processes this grading did not start: give another uid, or none "
-                "(a grading draws an unused one)";
-        return UidClaim{};
+        return fail("sandbox uid " + std::to_string(*wanted) +
+                    " is in use by processes this grading did not start: give another uid, or "
+                    "none (a grading draws an unused one)");
       }
     } else if (const std::string e = endProcessesOf(*wanted); !e.empty()) {
-      error = "sandbox uid " + std::to_string(*wanted) + ": " + e;
-      return UidClaim{};
+      return fail("sandbox uid " + std::to_string(*wanted) + ": " + e);
     }
   } else if (!drawUnusedUid(claim.fd_, claim.uid_, error)) {
     return claim;
   }
   if (!runsAs(claim.uid_)) {
-    error = "no process could run as sandbox uid " + std::to_string(claim.uid_);
-    return UidClaim{};
+    return fail("no process could run as sandbox uid " + std::to_string(claim.uid_));
   }
   return claim;
 }

@@ -48,7 +48,6 @@ inline constexpr const char* kNotRootNote =
     "not running as root, so the code ran as this user and saw the files the graders' run hides "
     "(run as root, the grader hides them and runs the code as a user of its own)";
 
-/// How a sandboxed process ended.
 struct Exit {
   enum class Kind { Exited, Signaled, TimedOut, FailedToStart } kind = Kind::Exited;
   int code = 0;        ///< exit status or signal number
