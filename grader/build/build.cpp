@@ -39,12 +39,6 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 using process::secondsSince;
 
-fs::path absoluteClean(const fs::path& p) {
-  std::error_code ec;
-  fs::path c = fs::weakly_canonical(fs::absolute(p, ec), ec);
-  return (ec ? fs::absolute(p) : c).lexically_normal();
-}
-
 // ---- reading what the compiler and the linker said ----
 
 std::string replaceAll(std::string s, const std::string& from, const std::string& to) {
@@ -305,14 +299,6 @@ void linkProbe(const Kit& kit, Build& build, std::vector<fs::path>& objects,
     }
   }
   build.linkSeconds = secondsSince(linkStart);
-}
-
-// Whether `uid`/`gid` (no supplementary groups) may read (`want` 4) or search (1) by the bits.
-bool permits(const struct stat& st, uid_t uid, gid_t gid, unsigned want) {
-  const unsigned bits = st.st_uid == uid   ? (st.st_mode >> 6) & 7u
-                        : st.st_gid == gid ? (st.st_mode >> 3) & 7u
-                                           : st.st_mode & 7u;
-  return (bits & want) == want;
 }
 
 // The outermost folder on the way to `path` (or `path`) that `uid` may not pass, with mode and

@@ -43,12 +43,6 @@ std::size_t depthOf(const fs::path& path) {
   return static_cast<std::size_t>(std::distance(path.begin(), path.end()));
 }
 
-fs::path canonicalish(const fs::path& path) {
-  std::error_code ec;
-  fs::path out = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  return ec ? fs::absolute(path).lexically_normal() : out;
-}
-
 // Creates the work dir fresh and empty, writable by the user the child runs as.
 std::string prepareWorkDir(const fs::path& dir, const Plan& plan) {
   if (dir.empty()) return "no work dir given";
@@ -72,19 +66,12 @@ std::string prepareWorkDir(const fs::path& dir, const Plan& plan) {
   return "";
 }
 
-// Whether `uid`/`gid` (no supplementary groups: the child drops them) may search a folder.
-bool searchableBy(const struct stat& st, uid_t uid, gid_t gid) {
-  if (st.st_uid == uid) return (st.st_mode & S_IXUSR) != 0;
-  if (st.st_gid == gid) return (st.st_mode & S_IXGRP) != 0;
-  return (st.st_mode & S_IXOTH) != 0;
-}
-
 // The paths a child must see whatever is hidden: SandboxSpec::reveal, its work dir, argv[0].
 std::vector<fs::path> revealsOf(const SandboxSpec& spec, const Plan& plan) {
   std::vector<fs::path> reveals;
-  for (const fs::path& r : spec.reveal) reveals.push_back(canonicalish(r));
-  reveals.push_back(canonicalish(plan.workDir));
-  reveals.push_back(canonicalish(spec.argv[0]));
+  for (const fs::path& r : spec.reveal) reveals.push_back(absoluteClean(r));
+  reveals.push_back(absoluteClean(plan.workDir));
+  reveals.push_back(absoluteClean(spec.argv[0]));
   return reveals;
 }
 
@@ -100,7 +87,7 @@ std::vector<fs::path> unsearchableAncestors(const std::vector<fs::path>& reveals
       if (ancestor == path || ancestor == ancestor.root_path()) continue;
       struct stat st;
       if (stat(ancestor.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) break;
-      if (!searchableBy(st, plan.uid, plan.gid)) {
+      if (!permits(st, plan.uid, plan.gid, 1)) {  // the child drops its groups
         if (std::find(covers.begin(), covers.end(), ancestor) == covers.end()) {
           covers.push_back(ancestor);
         }
@@ -115,7 +102,7 @@ std::vector<fs::path> unsearchableAncestors(const std::vector<fs::path>& reveals
 std::vector<fs::path> hidesOf(const SandboxSpec& spec, const std::vector<fs::path>& reveals,
                               const Plan& plan) {
   std::vector<fs::path> hides;
-  for (const fs::path& h : spec.hide) hides.push_back(canonicalish(h));
+  for (const fs::path& h : spec.hide) hides.push_back(absoluteClean(h));
   if (plan.dropPrivileges) {
     for (const fs::path& c : unsearchableAncestors(reveals, plan)) hides.push_back(c);
   }

@@ -434,6 +434,19 @@ Exit SandboxedProcess::stop() {
   return exit;
 }
 
+fs::path absoluteClean(const fs::path& path) {
+  std::error_code ec;
+  fs::path c = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return (ec ? fs::absolute(path) : c).lexically_normal();
+}
+
+bool permits(const struct stat& st, uid_t uid, gid_t gid, unsigned want) {
+  const unsigned bits = st.st_uid == uid   ? (st.st_mode >> 6) & 7u
+                        : st.st_gid == gid ? (st.st_mode >> 3) & 7u
+                                           : st.st_mode & 7u;
+  return (bits & want) == want;
+}
+
 bool isWithin(const std::filesystem::path& inner, const std::filesystem::path& outer) {
   auto o = outer.begin(), i = inner.begin();
   for (; o != outer.end(); ++o, ++i) {

@@ -22,6 +22,7 @@
 // What could not be done is said in Exit::notes, never silently.
 #pragma once
 
+#include <sys/stat.h>
 #include <sys/types.h>
 
 #include <cstddef>
@@ -125,5 +126,11 @@ SandboxView allowOnly(const std::vector<std::filesystem::path>& visible,
 
 /// True when `inner` is `outer` or lies inside it (both absolute and lexically normal).
 bool isWithin(const std::filesystem::path& inner, const std::filesystem::path& outer);
+
+/// `path` absolute and lexically normal, its links resolved as far as it exists.
+std::filesystem::path absoluteClean(const std::filesystem::path& path);
+
+/// Whether `uid`/`gid` (no supplementary groups) may read (`want` 4) or search (1) by the bits.
+bool permits(const struct stat& st, uid_t uid, gid_t gid, unsigned want);
 
 }  // namespace a6::grader
