@@ -152,6 +152,24 @@ const char* describe(Kind kind) {
       return "not a regular file";
   }
 }
+
+// Creates dest, readable by the sandbox's user. False (with out.error) when it cannot.
+bool makeDest(const fs::path& dest, Intake& out) {
+  std::error_code ec;
+  fs::create_directories(dest, ec);
+  if (ec) {
+    out.error = "cannot create the folder " + dest.string() +
+                " for the submission's files: " + ec.message() +
+                " (check that the output folder is writable)";
+    out.graderFault = true;
+    return false;
+  }
+  fs::permissions(dest,
+                  fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                      fs::perms::others_read | fs::perms::others_exec,
+                  ec);
+  return true;
+}
 }  // namespace
 
 std::string screen(Collector& c, const std::string& raw, const EntryPath& p, Kind kind,
@@ -230,23 +248,6 @@ Intake Collector::finish(const fs::path& dest, const std::string& what, bool any
   closingNotes(what, anyEntries, sawNestedArchive, out);
   out.notes = std::move(notes_);
   return out;
-}
-
-bool Collector::makeDest(const fs::path& dest, Intake& out) {
-  std::error_code ec;
-  fs::create_directories(dest, ec);
-  if (ec) {
-    out.error = "cannot create the folder " + dest.string() +
-                " for the submission's files: " + ec.message() +
-                " (check that the output folder is writable)";
-    out.graderFault = true;
-    return false;
-  }
-  fs::permissions(dest,
-                  fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                      fs::perms::others_read | fs::perms::others_exec,
-                  ec);
-  return true;
 }
 
 bool Collector::write(const fs::path& target, const Copy& copy, Intake& out) {

@@ -79,9 +79,6 @@ class Collector {
   bool anyChosen() const { return !chosen_.empty(); }
 
  private:
-  // Creates dest, readable by the sandbox's user. False (with out.error) when it cannot.
-  static bool makeDest(const fs::path& dest, Intake& out);
-
   // Readable by all; notes text that is not UTF-8. False (with out.error) when it cannot.
   bool write(const fs::path& target, const Copy& copy, Intake& out);
 

@@ -2,19 +2,18 @@
 // fresh empty work dir, no network, capped output, privileges dropped when the grader is root.
 // See docs/instructor.md for what this does and does not protect.
 //
-// Design note: what the child gets, in order (prepared before fork: plan.cpp, sandbox.cpp; the
-// child, child.cpp, only makes system calls until exec):
-//   0. as root, a pid namespace whose init (the keeper) runs the program as its child: whatever
-//      the program starts ends with the keeper and cannot signal outside, so a grading ends only
-//      what it started, with no search by uid. Where refused (no CAP_SYS_ADMIN), a plain fork;
+// Design note: what the child gets, in order (prepared before fork; child.cpp then makes only
+// system calls):
+//   0. as root, a pid namespace whose init (the keeper) runs the program: whatever the program
+//      starts ends with the keeper and cannot signal outside, so a grading ends only what it
+//      started, with no search by uid. Where refused (no CAP_SYS_ADMIN), a plain fork;
 //   1. its own session and process group (killed whole with SIGKILL);
-//   2. as root, a private mount namespace with its own /proc: each `hide` path covered (a folder
-//      by an empty tmpfs, a file by /dev/null), `reveal`, the work dir and argv[0] bound back
-//      (allowOnly() makes `hide` an allow-list); a folder above a reveal that `uid` cannot search
-//      is covered and the way rebuilt; the work dir a capped tmpfs when asked; no network;
+//   2. as root, a private mount namespace with its own /proc, `hide` covered and `reveal`, the
+//      work dir and argv[0] bound back (allowOnly() makes it an allow-list), a folder above a
+//      reveal that `uid` cannot search covered and the way rebuilt; then no network;
 //   3. rlimits: CPU, address space, file size, open files, processes, no core files;
-//   4. stdin /dev/null, stdout and stderr one pipe the parent drains (capped; the rest dropped so
-//      the child never blocks), the requested fds, every other fd closed;
+//   4. stdin /dev/null, stdout and stderr one pipe the parent drains (so the child never
+//      blocks), the requested fds, every other fd closed;
 //   5. cwd the work dir; as root no groups and `uid`/`gid`; SIGKILL when the parent dies;
 //   6. no_new_privs and seccomp: socket() fails with EACCES (no network even without
 //      namespaces), io_uring, ptrace and process_vm_* with EPERM, fork too when processes == 0;
