@@ -99,8 +99,10 @@ list(APPEND kit_files ${A6_KIT_PCH}.gch)
 list(APPEND A6_KIT_COMPILE_FLAGS -include ${A6_KIT_PCH})
 
 # Known texts: the solution's files and objects, compiled as the grader compiles a submitted
-# file, beside the kit (never in it: hidden with the build tree). A submitted file equal to one
-# gets its object (Kit::knownObjects): the grader's own texts are all that gradings share.
+# file (its folder mapped away, so the objects are the same bytes), beside the kit, never in it:
+# the kit folder is in every compile's view, this one is hidden with the build tree. A submitted
+# file equal to one gets its object (Kit::knownObjects): the grader's own texts are all that
+# gradings share.
 set(A6_KNOWN_DIR "")
 if(A6_HAVE_SOLUTION)
   set(A6_KNOWN_DIR ${CMAKE_CURRENT_BINARY_DIR}/known)

@@ -161,8 +161,8 @@ std::optional<std::string> readRegularFile(const fs::path& file) {
   return bytes;
 }
 
-// A tool the machine, not the code, may have ended: killed by a SIGKILL the grader did not
-// send, stopped at its wall-clock limit (a busy machine), or never started.
+// A tool the machine, not the code, may have ended: killed by a SIGKILL neither the grader nor
+// its CPU limit sent, stopped at its wall-clock limit (a busy machine), or never started.
 bool endedByTheMachine(const Exit& e, const Limits& limits = defaultCompileLimits()) {
   return e.kind == Exit::Kind::TimedOut || e.kind == Exit::Kind::FailedToStart ||
          killedByTheMachine(e, limits);

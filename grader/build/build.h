@@ -23,7 +23,8 @@ struct Kit {
   std::vector<std::string> modelsMain;    ///< the main asking the grader for reference forces
   std::vector<std::string> linkInputs;    ///< after the task objects: the probe kit, Box2D, ...
   std::filesystem::path starterObjects;   ///< the starter's <task>.o and .syms (its symbols)
-  std::filesystem::path knownObjects;     ///< the solution's <task>.cpp and .o; hidden, or ""
+  std::filesystem::path knownObjects;     ///< the solution's <task>.cpp and .o, out of the
+                                          ///< compiles' view (unlike `dir`); or ""
   std::filesystem::path dir;              ///< the kit folder: staged headers, starter objects
   /// Hidden from the tools but for `dir`, the work folder and the student's files: the
   /// repository and the build tree; a caller may add more (a batch's other submissions).

@@ -26,7 +26,8 @@ struct Intake {
 struct IntakeLimits {
   std::size_t maxFileBytes = 1u << 20;    ///< a task file larger than this is refused
   std::size_t maxTotalBytes = 64u << 20;  ///< stop reading an archive after decompressing
-                                          ///< this much (zip entries skipped do not count)
+                                          ///< this much (zip entries skipped by seeking,
+                                          ///< never decompressed, do not count)
   std::size_t maxEntries = 10000;         ///< stop reading after this many entries
   int maxDepth = 32;                      ///< path components; deeper files are skipped
 };
@@ -44,7 +45,8 @@ struct IntakeLimits {
 /// or one without task files.
 ///
 /// `error` is set when the submission cannot be read at all (missing, neither folder nor
-/// archive, or damaged before any task file).
+/// archive, or damaged before any task file: the task files before the damage are taken, with
+/// a note).
 Intake takeSubmission(const std::filesystem::path& submission, const std::filesystem::path& dest,
                       const IntakeLimits& limits = {});
 

@@ -1,5 +1,5 @@
-// The seccomp program of every sandboxed child: no sockets, io_uring, ptrace or cross-process
-// memory, and for the probe no new processes.
+// The seccomp program of every sandboxed child: allow by default; no sockets, io_uring, ptrace
+// or cross-process memory, and for the probe no new processes.
 #include <sched.h>
 #include <seccomp.h>
 #include <sys/mman.h>

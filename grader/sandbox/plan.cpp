@@ -232,42 +232,36 @@ std::string planFds(const SandboxSpec& spec, Plan& plan) {
   return "";
 }
 
-// What a failed step says: `before`, its subject (subjectOf), `after`, the errno's text, `end`.
-struct Sentence {
-  const char* before;
-  const char* after;
-  const char* end = "";
-};
-
-const std::map<int, Sentence> kSentences = {
-    {kSetsid, {"setsid", ": "}},
+// What a failed step says: $ stands for its subject (subjectOf), % for the errno's text.
+const std::map<int, const char*> kSentences = {
+    {kSetsid, "setsid: %"},
     {kUnshareMounts,
-     {"could not hide the grader's files (unshare(CLONE_NEWNS)", ": ",
-      "): only file permissions protect them"}},
+     "could not hide the grader's files (unshare(CLONE_NEWNS): %): only file permissions "
+     "protect them"},
     {kMountPrivate,
-     {"could not hide the grader's files (making / private", ": ",
-      "): only file permissions protect them"}},
-    {kHide, {"could not hide ", " (mount: ", ")"}},
-    {kReveal, {"could not keep ", " visible under a hidden path: "}},
+     "could not hide the grader's files (making / private: %): only file permissions protect "
+     "them"},
+    {kHide, "could not hide $ (mount: %)"},
+    {kReveal, "could not keep $ visible under a hidden path: %"},
     {kUnshareNet,
-     {"no network namespace (unshare(CLONE_NEWNET)", ": ",
-      "): sockets are refused by the seccomp filter only"}},
-    {kDevNull, {"opening /dev/null", ": "}},
-    {kFds, {"passing file descriptors", ": "}},
-    {kRlimit, {"setting ", ": "}},
-    {kChdir, {"entering the work dir ", ": "}},
-    {kSetgroups, {"dropping supplementary groups", ": "}},
-    {kSetgid, {"switching to gid ", ": "}},
-    {kSetuid, {"switching to uid ", ": "}},
-    {kDeathSignal, {"setting the parent-death signal", ": "}},
-    {kNoNewPrivs, {"setting no_new_privs", ": "}},
-    {kSeccomp, {"could not install the seccomp filter (", "", "): sockets are not refused"}},
-    {kExec, {"exec ", ": "}},
-    {kWorkTmpfs, {"mounting a tmpfs on the work dir ", ": "}},
+     "no network namespace (unshare(CLONE_NEWNET): %): sockets are refused by the seccomp filter "
+     "only"},
+    {kDevNull, "opening /dev/null: %"},
+    {kFds, "passing file descriptors: %"},
+    {kRlimit, "setting $: %"},
+    {kChdir, "entering the work dir $: %"},
+    {kSetgroups, "dropping supplementary groups: %"},
+    {kSetgid, "switching to gid $: %"},
+    {kSetuid, "switching to uid $: %"},
+    {kDeathSignal, "setting the parent-death signal: %"},
+    {kNoNewPrivs, "setting no_new_privs: %"},
+    {kSeccomp, "could not install the seccomp filter (%): sockets are not refused"},
+    {kExec, "exec $: %"},
+    {kWorkTmpfs, "mounting a tmpfs on the work dir $: %"},
     {kProc,
-     {"could not mount the pid namespace's own /proc (", "",
-      "): the code sees the machine's processes in /proc (it still cannot signal them)"}},
-    {kFork, {"starting the program in its pid namespace (fork)", ": "}},
+     "could not mount the pid namespace's own /proc (%): the code sees the machine's processes "
+     "in /proc (it still cannot signal them)"},
+    {kFork, "starting the program in its pid namespace (fork): %"},
 };
 
 // What the step failed on: the path, the limit, the work dir, the id, the program; or "".
@@ -324,8 +318,10 @@ std::string describeRecord(const Record& r, const Plan& plan, const SandboxSpec&
   if (sentence == kSentences.end()) {
     return "unknown setup stage " + std::to_string(r.stage) + ": " + err;
   }
-  const Sentence& s = sentence->second;
-  std::string text = s.before + subjectOf(r, plan, spec) + s.after + err + s.end;
+  std::string text;
+  for (const char* c = sentence->second; *c != '\0'; ++c) {
+    text += *c == '$' ? subjectOf(r, plan, spec) : *c == '%' ? err : std::string(1, *c);
+  }
   if (r.stage == kExec && r.err == EACCES && plan.dropPrivileges) {
     text += " (it runs as uid " + std::to_string(plan.uid) +
             ": the program and every folder above it must be readable and searchable by "

@@ -62,8 +62,8 @@ struct MountOp {
   // Reveal only:
   std::vector<std::string> chain;  // the ancestors of path, outermost first
   bool isDir = false;
-  int fd = -1;           // O_PATH fd on the original, opened by the child (a bind source
-                         // must be in the caller's mount namespace)
+  int fd = -1;           // O_PATH fd on the original, opened by the child in its new
+                         // namespace (a bind source must be in the caller's mount namespace)
   char source[32] = {};  // "/proc/self/fd/<fd>", written by the child
 };
 

@@ -8,10 +8,11 @@
 // sandboxed command has its own pid namespace and nothing searches the machine for processes to
 // kill; only where pid namespaces are refused are a sandbox user's processes ended by uid.
 // A sandbox user per grading, unused machine-wide: RLIMIT_NPROC counts a user's processes
-// machine-wide, so each grading claims a random uid far above any account (1e6 to 2e9 where
-// every uid is mapped), with no account, no process in /proc and a lock file; graders that see
-// neither (two containers) collide with a chance of about 1 in 2e9. Processes are found by the
-// uid in /proc/PID/status, never by name or parent.
+// machine-wide, and file access is per user, so each grading claims a random uid far above any
+// account (1e6 to 2e9 where every uid is mapped), with no account, no process in /proc and a
+// lock file; graders that see neither (two containers) collide with a chance of about 1 in 2e9.
+// Processes are found by the uid in /proc/PID/status (where names are escaped, so a process's
+// name cannot fake the line), never by name or parent.
 #pragma once
 
 #include <sys/types.h>

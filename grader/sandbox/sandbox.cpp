@@ -158,8 +158,10 @@ Started start(const SandboxSpec& spec) {
   s.error = makePlan(spec, plan);
   s.workDir = plan.workDir;
   s.notes = plan.notes;
+  if (!s.error.empty()) return s;
   int pipes[3][2];
-  if (!s.error.empty() || !(s.error = openPipes(pipes)).empty()) return s;
+  s.error = openPipes(pipes);
+  if (!s.error.empty()) return s;
   int(&out)[2] = pipes[0];
   int(&status)[2] = pipes[1];
   int(&end)[2] = pipes[2];

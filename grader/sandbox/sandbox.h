@@ -8,9 +8,10 @@
 //      starts ends with the keeper and cannot signal outside, so a grading ends only what it
 //      started, with no search by uid. Where refused (no CAP_SYS_ADMIN), a plain fork;
 //   1. its own session and process group (killed whole with SIGKILL);
-//   2. as root, a private mount namespace with its own /proc, `hide` covered and `reveal`, the
-//      work dir and argv[0] bound back (allowOnly() makes it an allow-list), a folder above a
-//      reveal that `uid` cannot search covered and the way rebuilt; then no network;
+//   2. as root, a private mount namespace with its own /proc, `hide` covered (a folder by an
+//      empty tmpfs, a file by /dev/null) and `reveal`, the work dir and argv[0] bound back
+//      (allowOnly() makes it an allow-list), a folder above a reveal that `uid` cannot search
+//      covered and the way rebuilt; then no network;
 //   3. rlimits: CPU, address space, file size, open files, processes, no core files;
 //   4. stdin /dev/null, stdout and stderr one pipe the parent drains (so the child never
 //      blocks), the requested fds, every other fd closed;
@@ -118,8 +119,9 @@ struct SandboxView {
 };
 
 /// The allow-list view: everything hidden but the system's programs and libraries, /proc,
-/// /dev/null, /dev/zero and /dev/urandom (in a /dev of their own), and `visible`. The `secrets`
-/// (the grader's trees) come first in `hide`, hidden except what is `visible` in them.
+/// /dev/null, /dev/zero and /dev/urandom (in a /dev of their own), and `visible`. As root only:
+/// without a mount namespace nothing is hidden, and the notes say so naming the `secrets` (the
+/// grader's trees, first in `hide`, hidden except what is `visible` in them).
 SandboxView allowOnly(const std::vector<std::filesystem::path>& visible,
                       const std::vector<std::filesystem::path>& secrets = {});
 
