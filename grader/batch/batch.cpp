@@ -42,9 +42,10 @@ std::vector<std::string> flagsOf(const Json& incidents) {
   std::vector<std::string> flags;
   auto add = [&](const char* key, const std::string& what) {
     const double n = incidents.is_object() ? numberOf(incidents.value(key, Json())).value_or(0) : 0;
+    if (!(n > 0)) return;
     std::ostringstream line;
     line << what << " " << n << (n == 1 ? " time" : " times");
-    if (n > 0) flags.push_back(line.str());
+    flags.push_back(line.str());
   };
   add("crashes", "the code crashed");
   add("timeouts", "the code ran out of time");

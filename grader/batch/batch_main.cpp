@@ -59,10 +59,10 @@
 #include "batch/batch.h"
 #include "batch/command_line.h"
 #include "batch/progress.h"
+#include "common/fixed.h"
 #include "common/read_all.h"
 #include "insights/page.h"
-#include "report/replay_html.h"  // fixed
-#include "report/report.h"       // writeFileAtomically
+#include "report/report.h"  // writeFileAtomically
 #include "sandbox/process.h"
 
 namespace fs = std::filesystem;

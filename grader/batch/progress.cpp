@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "report/replay_html.h"  // fixed
+#include "common/fixed.h"
 #include "sandbox/process.h"
 
 namespace a6::grader::batch {

@@ -279,22 +279,25 @@ std::optional<std::string> readNoFollow(const fs::path& path, std::size_t cap, s
     why = std::strerror(errno);
     return std::nullopt;
   }
-  std::optional<std::string> data;
   struct stat st {};
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
     why = "not a regular file";
-  } else {
-    data.emplace();
-    char buf[16 << 10];
-    for (ssize_t n; data->size() <= cap && (n = ::read(fd, buf, sizeof buf)) != 0;) {
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0) {
-        why = std::strerror(errno);
-        data.reset();
-        break;
-      }
-      data->append(buf, static_cast<std::size_t>(n));
+    return std::nullopt;
+  }
+  std::string data;
+  char buf[16 << 10];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      why = std::strerror(errno);
+      ::close(fd);
+      return std::nullopt;
     }
+    if (n == 0) break;
+    data.append(buf, static_cast<std::size_t>(n));
+    if (data.size() > cap) break;
   }
   ::close(fd);
   return data;

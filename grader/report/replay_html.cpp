@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/fixed.h"
 #include "report/report.h"
 
 namespace a6::grader {
@@ -229,12 +230,6 @@ void replayBlock(std::ostringstream& out, const ReplayView& v) {
 }
 
 }  // namespace
-
-std::string fixed(double x, int digits) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", digits, x);
-  return text;
-}
 
 std::string withUnit(double value, const std::string& unit) {
   if (!std::isfinite(value)) return "not a number";

@@ -29,7 +29,4 @@ std::string svgPlot(const std::string& title, const std::string& unit,
 /// A number for people: three significant digits and its unit ("0.0123 m", "-4.56 J").
 std::string withUnit(double value, const std::string& unit);
 
-/// `x` with `digits` digits after the point ("12.50").
-std::string fixed(double x, int digits);
-
 }  // namespace a6::grader

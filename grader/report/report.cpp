@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "common/fixed.h"
 #include "render/replay.h"
 #include "report/replay_html.h"
 
