@@ -17,6 +17,7 @@
 #include <fstream>
 
 #include "checks/checks.h"
+#include "common/limits.h"
 #include "grading/grading.h"
 #include "sandbox/sandbox.h"
 #include "scoring/rubric.h"
@@ -35,6 +36,7 @@ struct Options {
   bool listTests = false;
   bool checkRubric = false;
   bool listItems = false;
+  bool listLimits = false;
   std::string publicRubric;
 };
 
@@ -83,9 +85,10 @@ void addRunOptions(CLI::App& app, GradeOptions& options) {
                  "since it grades several submissions at once)")
       ->check(CLI::Range(1, 64));
   app.add_option("--time-budget", options.timeBudget,
-                 "seconds the student's code may take over all checks together (default 420); "
-                 "checks after that fail unrun, so that a submission that loops in many places "
-                 "still gets its results within Gradescope's limit")
+                 "seconds the student's code may take over all checks together (default " +
+                     secondsText(kDefaultTimeBudget) +
+                     "); checks after that fail unrun, so that a submission that loops in many "
+                     "places still gets its results within Gradescope's limit")
       ->check(CLI::Range(1.0, 86400.0));
   app.add_option("--tests", options.filter,
                  "only the checks matching this GoogleTest filter (debugging: the score is then "
@@ -99,6 +102,9 @@ void addCommandOptions(CLI::App& app, Options& options) {
   app.add_flag("--list-items", options.listItems,
                "print each rubric item (name, points, checks, extra or regular, visibility) "
                "and a last line: total, points, checks, extra credit; then exit");
+  app.add_flag("--list-limits", options.listLimits,
+               "print every time and memory limit of a grading (key, value, unit, what: "
+               "grader/common/limits.h), then exit");
   app.add_flag("--check-rubric", options.checkRubric,
                "check the rubric (--rubric, or the default) against every check, then exit: 0 "
                "when it can be used, 2 and each problem with its line and fix when not");
@@ -136,6 +142,10 @@ int writePublicRubric(const Rubric& rubric, const std::string& file) {
 
 // What the command line asks for, once it is read.
 int dispatch(const Options& options) {
+  if (options.listLimits) {
+    std::fputs(listedLimits().c_str(), stdout);
+    return 0;
+  }
   const Rubric rubric = readRubric(options.rubric);
   if (!options.publicRubric.empty()) return writePublicRubric(rubric, options.publicRubric);
   if (options.listTests || options.checkRubric || options.listItems) {

@@ -387,9 +387,9 @@ check_stated() {
   fact README.md "A failing test prints at most %s lines" "$limit"
   fact docs/handout.md "No test prints more than %s" "$limit"
   fact docs/handout.md "(%s lines at most), and names the file" "$brief"
-  # (The task files counted in words, "the seven files": framework/harness/task_files.h's list.)
+  # (The task files counted in words, "the seven files": framework/harness/tasks.h's table.)
   local words=(no one two three four five six seven eight nine ten) count
-  count=$(grep -oE '"[a-z_]+\.cpp"' framework/harness/task_files.h | wc -l)
+  count=$(grep -oE '"[a-z_]+\.cpp"' framework/harness/tasks.h | wc -l)
   for file in README.md grader/release/README.md docs/handout.md; do
     for stated in $(grep -oE '\b[0-9]+ (Debian )?packages\b' "$file" | awk '{ print $1 }' | sort -u); do
       [ "$stated" = "$PACKAGES" ] || fail "$file says $stated packages; install-deps names $PACKAGES"
@@ -443,7 +443,7 @@ check_handout_images() {
   [ "$bad" = 1 ] || echo "ok: docs/handout.md describes every reference image as the manifest does"
 }
 
-# Words that went stale once: the task files are seven (framework/harness/task_files.h), and no
+# Words that went stale once: the task files are seven (framework/harness/tasks.h), and no
 # doc, comment or message may say six (the bench results record what was measured then).
 check_words() {
   local stale
@@ -482,6 +482,33 @@ check_design_folders() {
   [ "$bad" = 1 ] || echo "ok: grader/DESIGN.md's diagram names the $(wc -w <<<"$named") folders of grader/"
 }
 check_design_folders
+
+# Every time and memory limit the docs state is the grader's own (a6_grade --list-limits, from
+# grader/common/limits.h): a limit changed there and not in the prose fails here.
+check_limits() {
+  local listed
+  listed=$("$grade" --list-limits 2>/dev/null)
+  [ -n "$listed" ] || { fail "a6_grade --list-limits printed nothing"; return; }
+  limit() { awk -v key="$1" '$1 == key { print $2 }' <<<"$listed"; }
+  local i=docs/instructor.md
+  fact $i "in seconds (default %s). Checks after it" "$(limit time_budget)"
+  fact $i "(%s by default)." "$(limit time_budget)"
+  fact $i "(default %s; \`a6_grade\`'s own \`--time-budget\` is %s s)" "$(limit batch_timeout)" "$(limit time_budget)"
+  fact $i "Each compile may take %s s," "$(limit compile_time)"
+  fact $i "and the whole build %s s" "$(limit build_budget)"
+  fact $i "bounded in time (%s s" "$(limit build_budget)"
+  fact $i "and %s s a file)." "$(limit compile_time)"
+  fact $i "the build budget (%s s, plus %s s for a link)" "$(limit build_budget)" "$(limit link_allowance)"
+  fact $i "plus %s s for the grader's own work" "$(limit own_work)"
+  fact $i "\`--time-budget\`, %s s a scene and %s s for all at most" "$(limit replay_time)" "$(limit replays_time)"
+  fact $i "within %s s. Code that runs before" "$(limit startup_time)"
+  fact $i "a CPU-time limit (%s s) and a memory limit (%s MiB)" "$(limit probe_cpu)" "$(limit probe_memory)"
+  fact $i "gives the student's code %s s over all checks (\`--time-budget %s\`" \
+    "$(limit gradescope_time_budget)" "$(limit gradescope_time_budget)"
+  fact $i "and stops \`a6_grade\` after %s s" "$(limit gradescope_time_limit)"
+  fact $i "is limited to %s MiB of address space" "$(limit probe_memory)"
+}
+check_limits
 check_facts
 check_handout_images
 check_first_hour

@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "harness/task_files.h"
+#include "harness/tasks.h"
 
 namespace a6::golden {
 namespace {
@@ -64,7 +64,9 @@ GoldenImage fromJson(const Json& j) {
     throw std::runtime_error("tolerance.maxFraction must be in [0, 1]");
   }
   if (g.tolerance.block < 1) throw std::runtime_error("tolerance.block must be >= 1");
-  if (g.task < 1 || g.task > kTaskCount) throw std::runtime_error("task must be 1..7");
+  if (courseTasks().find(g.task) == nullptr) {
+    throw std::runtime_error("task must be 1.." + std::to_string(courseTasks().count()));
+  }
   if (!g.exercises(g.task)) throw std::runtime_error("tasks must include task");
   if (g.baselines.empty()) throw std::runtime_error("no baselines");
   return g;
@@ -179,12 +181,12 @@ std::string writeManifest(const Manifest& manifest, const std::string& path) {
 
 std::string describeTasks(const GoldenImage& image) {
   std::string text =
-      "task " + std::to_string(image.task) + " (" + std::string(taskFile(image.task)) + ")";
+      "task " + std::to_string(image.task) + " (" + courseTasks().file(image.task) + ")";
   std::string others;
   for (int t : image.tasks) {
     if (t == image.task) continue;
     others += (others.empty() ? "" : ", ") + std::string("task ") + std::to_string(t) + " (" +
-              taskFile(t) + ")";
+              courseTasks().file(t) + ")";
   }
   if (!others.empty()) text += ", on top of " + others;
   return text;

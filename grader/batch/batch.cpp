@@ -14,12 +14,6 @@ namespace a6::grader::batch {
 
 using Json = nlohmann::ordered_json;
 
-int taskOfTag(const std::string& tag) {
-  const bool named = tag.size() == 5 && tag.rfind("task", 0) == 0 && tag[4] >= '1' &&
-                     tag[4] <= '0' + static_cast<int>(kTasks);
-  return named ? tag[4] - '0' : 0;
-}
-
 namespace {
 
 std::string number(double x) {
@@ -53,7 +47,7 @@ std::vector<std::string> flagsOf(const Json& incidents) {
   return flags;
 }
 
-// The task (1..kTasks) a test's tags name, 0 for none; and whether they say extra credit.
+// The task a test's tags name, 0 for none; and whether they say extra credit.
 std::pair<int, bool> taskOfTags(const Json& tags) {
   int task = 0;
   bool extraCredit = false;
@@ -61,7 +55,7 @@ std::pair<int, bool> taskOfTags(const Json& tags) {
     if (!tag.is_string()) continue;
     const std::string s = tag.get<std::string>();
     if (s == "extra_credit") extraCredit = true;
-    if (const int t = taskOfTag(s); t > 0) task = t;
+    if (const int t = courseTasks().ofTag(s); t > 0) task = t;
   }
   return {task, extraCredit};
 }
@@ -70,14 +64,14 @@ std::pair<int, bool> taskOfTags(const Json& tags) {
 // (extra_data's own maximum and extra credit win when given).
 void pointsOfTests(const Json& tests, const Json& extra, Outcome& o) {
   double max = 0, extraCredit = 0;
-  std::array<double, kTasks> tasks{};
+  std::vector<double> tasks(o.tasks.size());
   for (const Json& t : tests) {
     const double score = t.value("score", 0.0);
     max += t.value("max_score", 0.0);
     const auto [task, isExtra] = taskOfTags(t.value("tags", Json::array()));
     if (isExtra) {
       extraCredit += score;
-    } else if (task > 0) {
+    } else if (task > 0 && static_cast<std::size_t>(task) <= tasks.size()) {
       tasks[static_cast<std::size_t>(task - 1)] += score;
     }
   }
@@ -209,16 +203,18 @@ std::string csvField(const std::string& text) {
   return out + "\"";
 }
 
-std::string gradebookCsv(const std::vector<std::pair<const Submission*, const Outcome*>>& graded) {
+std::string gradebookCsv(const std::vector<std::pair<const Submission*, const Outcome*>>& graded,
+                         const TaskTable& tasks) {
   std::string csv = "student,email,sid,total,max,";
-  for (std::size_t t = 1; t <= kTasks; ++t) csv += "task" + std::to_string(t) + ",";
+  for (const Task& t : tasks.all()) csv += tasks.tag(t.number) + ",";
   csv += "extra_credit,status,seconds,mistakes\r\n";
   auto num = [](const std::optional<double>& x) { return x ? number(*x) : std::string(); };
   for (const auto& [s, o] : graded) {
     for (const Person& p : s->people) {
       csv += csvField(p.name) + "," + csvField(p.email) + "," + csvField(p.sid) + ",";
       csv += num(o->total) + "," + num(o->max) + ",";
-      for (const auto& t : o->tasks) csv += num(t) + ",";
+      for (std::size_t t = 0; t < static_cast<std::size_t>(tasks.count()); ++t)
+        csv += num(t < o->tasks.size() ? o->tasks[t] : std::nullopt) + ",";
       csv += num(o->extraCredit) + "," + csvField(o->status) + ",";
       std::ostringstream seconds;
       seconds << std::fixed << std::setprecision(1) << o->seconds;

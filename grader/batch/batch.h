@@ -20,6 +20,8 @@
 #include <utility>
 #include <vector>
 
+#include "harness/tasks.h"
+
 namespace a6::grader::batch {
 
 enum class Layout { Plain, Gradescope, Canvas };
@@ -89,12 +91,6 @@ std::string safeName(const std::string& text);
 /// `options` (what else decides the grade: the rubric's text, the seed, ...).
 std::string fingerprint(const Submission& submission, const std::string& options);
 
-/// Tasks 1 to 7 (harness/task_files.h): a column each in the gradebook.
-inline constexpr std::size_t kTasks = 7;
-
-/// The task a results.json tag names: N for "task<N>" (1 to kTasks), else 0.
-int taskOfTag(const std::string& tag);
-
 /// Statuses in the gradebook.
 inline constexpr const char* kGraded = "graded";
 inline constexpr const char* kBuildFailed = "build failed";  ///< a task file missing or broken
@@ -110,7 +106,8 @@ struct Outcome {
   /// Present when graded (or with a failed build): the total (extra credit included), the
   /// rubric's maximum, each task's regular points, the extra credit.
   std::optional<double> total, max;
-  std::array<std::optional<double>, kTasks> tasks{};
+  std::vector<std::optional<double>> tasks =
+      std::vector<std::optional<double>>(static_cast<std::size_t>(courseTasks().count()));
   std::optional<double> extraCredit;
   double seconds = 0;  ///< a6_grade's wall-clock time
   std::string reason;  ///< why it is not "graded" (for the summary)
@@ -136,10 +133,12 @@ std::optional<Outcome> outcomeOfMarker(const std::string& markerText,
 /// space (quotes doubled).
 std::string csvField(const std::string& text);
 
-/// gradebook.csv: `student,email,sid,total,max,task1..task7,extra_credit,status,seconds,mistakes`
-/// (the ids named, space-separated), a row per person of each submission with an outcome, in key
-/// order. Points are blank for a submission without a grade (grader error, timed out, crashed).
-std::string gradebookCsv(const std::vector<std::pair<const Submission*, const Outcome*>>& graded);
+/// gradebook.csv: `student,email,sid,total,max,task1..task<N>,extra_credit,status,seconds,mistakes`
+/// (a column per task of `tasks`; the mistakes' ids, space-separated), a row per person of each
+/// submission with an outcome, in key order. Points are blank for a submission without a grade
+/// (grader error, timed out, crashed).
+std::string gradebookCsv(const std::vector<std::pair<const Submission*, const Outcome*>>& graded,
+                         const TaskTable& tasks = courseTasks());
 
 /// How many submissions each known mistake was named for, most often first (ties by id), one
 /// line each; "" when none was named.

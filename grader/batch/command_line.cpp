@@ -73,7 +73,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, Options& options) {
   app.add_option("-j,--jobs", options.jobs, "submissions graded at once (default: one per core)")
       ->check(CLI::Range(1, 256));
   app.add_option("--timeout", options.timeout,
-                 "seconds one submission may take before its a6_grade is killed (default 900)")
+                 "seconds one submission may take before its a6_grade is killed (default " +
+                     secondsText(kBatchTimeout) + ")")
       ->check(CLI::Range(1.0, 86400.0));
   app.add_option("--layout", options.layout,
                  "plain, gradescope or canvas (default: recognised from the folder)")

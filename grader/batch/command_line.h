@@ -7,10 +7,9 @@
 #include <optional>
 #include <string>
 
-namespace a6::grader::batch {
+#include "common/limits.h"
 
-/// Seconds one submission may take by default (a6_grade's own budget is 420 s).
-constexpr double kDefaultTimeout = 900;
+namespace a6::grader::batch {
 
 struct Options {
   std::string input;
@@ -22,7 +21,7 @@ struct Options {
   std::optional<std::uint64_t> seed;
   std::optional<double> timeBudget;
   int jobs = 0;
-  double timeout = kDefaultTimeout;
+  double timeout = kBatchTimeout;
   bool force = false;
   bool keepWork = false;
   bool similarity = false;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "grading/budgets.h"
+#include "common/limits.h"
 #include "intake/intake.h"
 #include "sandbox/sandbox.h"
 

@@ -9,7 +9,8 @@
 #include <vector>
 
 #include "build/build.h"
-#include "harness/task_files.h"
+#include "common/limits.h"
+#include "harness/tasks.h"
 
 namespace a6::paths {
 extern const char kit_json[];  // BUILD/grader/kit.json (a6_configured_path)
@@ -23,9 +24,9 @@ fs::path defaultKitPath() { return paths::kit_json; }
 
 Limits defaultCompileLimits() {
   Limits l;
-  l.wallSeconds = 60;
-  l.cpuSeconds = 60;
-  l.memoryBytes = std::size_t{512} << 20;  // a compile needs about 200 MiB of address space
+  l.wallSeconds = kCompileSeconds;
+  l.cpuSeconds = kCompileSeconds;
+  l.memoryBytes = kCompileMemoryBytes;
   l.fileSizeBytes = std::size_t{64} << 20;
   l.processes = 8;
   l.outputBytes = std::size_t{64} << 10;

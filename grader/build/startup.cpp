@@ -4,6 +4,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/limits.h"
 #include "probe/probe_client.h"
 
 namespace fs = std::filesystem;
@@ -12,7 +13,6 @@ namespace a6::grader {
 namespace {
 
 // How long a probe may take to reach main and answer a request that runs no student code, s.
-constexpr double kStartupSeconds = 5;
 
 const char* const kBeforeMain =
     "Code that runs before main, such as the initializer of a global or static variable, must "

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <string>
 
+#include "common/limits.h"
 #include "harness/student_code.h"
 #include "probe/probe_pair.h"
 
@@ -18,8 +19,6 @@ namespace a6::grader {
 /// other requests then fail at once. So code that crashes on every call costs its own checks,
 /// not the probe's restarts for every task after it.
 constexpr int kStartsPerCheck = 3;
-/// The time limit of a check that matches no rubric item, s.
-constexpr double kDefaultTimeLimit = 10;
 
 class BudgetedStudent final : public harness::StudentCode {
  public:

@@ -19,7 +19,7 @@
 #include "checks/outcome.h"
 #include "checks/scene_run.h"
 #include "checks/transcript.h"
-#include "grading/budgets.h"
+#include "common/limits.h"
 #include "harness/student_code.h"
 #include "scoring/rubric.h"
 

@@ -15,6 +15,7 @@
 #include "build/build.h"
 #include "build/startup.h"
 #include "common/fnv1a.h"
+#include "harness/tasks.h"
 #include "intake/intake.h"
 #include "mistakes/mistakes.h"
 #include "replay/replays.h"
@@ -370,8 +371,8 @@ void Grading::endWhatWasLeftRunning() {
 void Grading::nameMistakes() {
   std::set<int> failing;
   for (const TestOutcome& t : report_.tests) {
-    const int task = t.name.rfind("Task", 0) == 0 && t.name.size() > 4 ? t.name[4] - '0' : 0;
-    if (!t.passed && task >= 1 && task <= kTaskCount) failing.insert(task);
+    const SuiteOwner owner = courseTasks().ofSuite(t.name.substr(0, t.name.find('.')));
+    if (!t.passed && owner.task > 0 && isPhysics(owner.kind)) failing.insert(owner.task);
   }
   try {
     report_.mistakes = grader::nameMistakes(transcript_, mistakeLibrary(), failing);

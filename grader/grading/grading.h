@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "checks/checks.h"
+#include "common/limits.h"
 #include "harness/student_code.h"
 #include "scoring/rubric.h"
 

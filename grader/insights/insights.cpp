@@ -9,7 +9,7 @@
 #include <set>
 #include <system_error>
 
-#include "batch/batch.h"  // parseGradescopeMetadata, taskOfTag
+#include "batch/batch.h"  // parseGradescopeMetadata
 
 namespace a6::grader::insights {
 namespace {
@@ -86,7 +86,7 @@ ItemResult itemOf(const Json& t) {
     for (const Json& tag : t["tags"]) {
       const std::string s = tag.is_string() ? tag.get<std::string>() : "";
       if (s == "extra_credit") item.extraCredit = true;
-      if (const int task = batch::taskOfTag(s); task > 0) item.task = task;
+      if (const int task = courseTasks().ofTag(s); task > 0) item.task = task;
     }
   }
   const Json& extra = objectAt(t, "extra_data");
@@ -269,12 +269,7 @@ std::vector<SubmissionResult> readFolder(const fs::path& folder, std::vector<std
   return all;
 }
 
-int taskOfCheck(const std::string& check) {
-  const std::size_t at = check.rfind("Golden", 0) == 0 ? 6 : 0;
-  if (check.compare(at, 4, "Task") != 0 || check.size() <= at + 4) return 0;
-  const char digit = check[at + 4];
-  return std::isdigit(static_cast<unsigned char>(digit)) ? digit - '0' : 0;
-}
+int taskOfCheck(const std::string& check, const TaskTable& tasks) { return tasks.ofCheck(check); }
 
 namespace {
 

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "harness/tasks.h"
+
 namespace a6::grader::insights {
 
 /// One rubric item of one submission, as results.json's "tests" entry gives it.
@@ -73,7 +75,7 @@ struct ItemStats {
 
 struct CheckStats {
   std::string name;
-  int task = 0;  ///< from "Task<N>" or "GoldenTask<N>" in its name; 0 when none
+  int task = 0;  ///< its suite's task (harness/tasks.h); 0 when none
   int ran = 0, passed = 0;
   /// Points the class lost on it: each grading's points lost on an item, shared among the item's
   /// checks it failed. Known (costed) only when every grading that ran it named them (a
@@ -116,7 +118,7 @@ inline constexpr double kNearlyAllFail = 0.10;
 
 ClassInsights summarize(std::vector<SubmissionResult> submissions);
 
-/// The task a check belongs to: N of "Task<N>..." or "GoldenTask<N>..."; 0 for none.
-int taskOfCheck(const std::string& check);
+/// The task a check belongs to, by its suite in `tasks` (harness/tasks.h); 0 for none.
+int taskOfCheck(const std::string& check, const TaskTable& tasks = courseTasks());
 
 }  // namespace a6::grader::insights

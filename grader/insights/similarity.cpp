@@ -19,8 +19,9 @@
 #include <sstream>
 #include <system_error>
 
+#include "common/limits.h"
 #include "common/read_all.h"
-#include "harness/task_files.h"
+#include "harness/tasks.h"
 #include "intake/intake.h"
 #include "sandbox/process.h"
 
@@ -30,7 +31,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kTool = "sim_c++";
-constexpr double kToolSeconds = 120;               // per task file, for the whole class
 constexpr std::uintmax_t kLargestFile = 64 << 10;  // bytes: a task file is a few kB
 constexpr int kMinimumRareLines = 4;               // fewer shared rare lines: a coincidence
 
@@ -59,7 +59,7 @@ std::optional<int> waitUnlessStopped(pid_t pid, const StopAsked& stop, bool& van
   const auto start = std::chrono::steady_clock::now();
   for (;;) {
     if (const std::optional<int> status = process::waitFor(pid, 0.2, &vanished)) return status;
-    if (vanished || process::secondsSince(start) >= kToolSeconds || stop()) return {};
+    if (vanished || process::secondsSince(start) >= kSimilaritySeconds || stop()) return {};
   }
 }
 
@@ -78,7 +78,8 @@ bool runTool(std::vector<std::string> args, const fs::path& out, const StopAsked
     dup2(report, STDOUT_FILENO);
     dup2(null, STDERR_FILENO);
     // The files are the students': the tool gets bounded time, memory and output.
-    const rlimit cpu{static_cast<rlim_t>(kToolSeconds), static_cast<rlim_t>(kToolSeconds)};
+    const rlimit cpu{static_cast<rlim_t>(kSimilaritySeconds),
+                     static_cast<rlim_t>(kSimilaritySeconds)};
     const rlimit memory{rlim_t(2) << 30, rlim_t(2) << 30},
         output{rlim_t(64) << 20, rlim_t(64) << 20};
     setrlimit(RLIMIT_CPU, &cpu);

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/task_files.h"
+#include "harness/tasks.h"
 
 namespace a6::grader::entries {
 

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "harness/task_files.h"
+#include "harness/tasks.h"
 
 namespace a6::grader {
 
-/// The task files, in task order (harness/task_files.h).
+/// The task files, in task order (harness/tasks.h).
 using a6::kTaskFiles;
 
 struct Intake {

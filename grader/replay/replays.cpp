@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "harness/tasks.h"
 #include "mistakes/mistakes.h"
 #include "render/replay.h"
 
@@ -335,7 +336,9 @@ std::vector<ReplayView> trajectoryReplays(const Transcript& transcript,
                                           const std::vector<std::string>& failedChecks) {
   std::vector<ReplayView> views;
   for (const std::string& check : failedChecks) {
-    if (views.size() >= kTrajectories || check.rfind("Task3", 0) != 0) continue;
+    if (views.size() >= kTrajectories ||
+        !courseTasks().isPhysicsCheckOf(check, "time_stepping.cpp"))
+      continue;
     if (std::optional<ReplayView> v = trajectoryOf(transcript, check))
       views.push_back(std::move(*v));
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "harness/tasks.h"
 #include "render/replay.h"
 
 namespace a6::grader {
@@ -69,7 +70,9 @@ std::vector<ParticleTrajectory> runParticleTrajectories(BudgetedStudent& student
                                                         const std::vector<std::string>& failed) {
   std::vector<ParticleTrajectory> out;
   for (const std::string& check : failed) {
-    if (out.size() >= kParticleTrajectories || check.rfind("Task5", 0) != 0) continue;
+    if (out.size() >= kParticleTrajectories ||
+        !courseTasks().isPhysicsCheckOf(check, "particle_system.cpp"))
+      continue;
     const harness::ParticleRunRequest* request = replayableRun(transcript, check);
     if (request == nullptr) continue;
     ParticleTrajectory t{check, *request, sampleSteps(request->steps), {}};

@@ -12,14 +12,10 @@
 #include "checks/budgeted_student.h"
 #include "checks/scene_run.h"
 #include "checks/transcript.h"
+#include "common/limits.h"
 #include "golden_checks.h"
 
 namespace a6::grader {
-
-/// The time one scene's replay may take, s (the probe's; beyond it the replay is left out).
-constexpr double kReplaySeconds = 10;
-/// The time all replays together may take, s: the scenes after it get none.
-constexpr double kReplaysSeconds = 40;
 
 std::vector<SceneRun> runReplays(BudgetedStudent& student,
                                  const std::vector<a6::test::ImagedScene>& scenes);

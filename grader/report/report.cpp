@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "common/fixed.h"
+#include "harness/tasks.h"
 #include "render/replay.h"
 #include "report/replay_html.h"
 
@@ -37,13 +38,8 @@ std::string cap(const std::string& text, std::size_t limit) {
 
 std::string fmt(double x) { return formatPoints(x); }
 
-// 1..7 for a task file name, 0 otherwise.
-int taskOf(const std::string& file) {
-  for (std::size_t i = 0; i < kTaskFiles.size(); ++i) {
-    if (kTaskFiles[i] == file) return static_cast<int>(i + 1);
-  }
-  return 0;
-}
+// The task of a task file's name, 0 otherwise.
+int taskOf(const std::string& file) { return courseTasks().ofFile(file); }
 
 const TaskBuild* buildOf(const GradeReport& report, int task) {
   for (const TaskBuild& t : report.build.tasks) {
@@ -242,7 +238,7 @@ Json itemJson(const GradeReport& report, const ScoredItem& s) {
   t["visibility"] = toString(s.item.visibility);
   t["output"] = itemOutput(report, s);
   Json tags = Json::array();
-  if (s.item.task > 0) tags.push_back("task" + std::to_string(s.item.task));
+  if (courseTasks().find(s.item.task) != nullptr) tags.push_back(courseTasks().tag(s.item.task));
   if (s.item.extraCredit) tags.push_back("extra_credit");
   if (s.item.allOrNothing) tags.push_back("all_or_nothing");
   t["tags"] = tags;

@@ -31,13 +31,15 @@
 #include <utility>
 #include <vector>
 
+#include "common/limits.h"
+
 namespace a6::grader {
 
 struct Limits {
-  double wallSeconds = 10;               ///< per request (probe) or per command (compiler), s
-  double cpuSeconds = 60;                ///< RLIMIT_CPU for the whole process, s
-  std::size_t memoryBytes = 512u << 20;  ///< RLIMIT_AS
-  std::size_t fileSizeBytes = 1u << 20;  ///< RLIMIT_FSIZE
+  double wallSeconds = kDefaultTimeLimit;       ///< per request (probe) or command (compiler), s
+  double cpuSeconds = kProbeCpuSeconds;         ///< RLIMIT_CPU for the whole process, s
+  std::size_t memoryBytes = kProbeMemoryBytes;  ///< RLIMIT_AS
+  std::size_t fileSizeBytes = 1u << 20;         ///< RLIMIT_FSIZE
   int processes = 1;  ///< extra processes and threads: RLIMIT_NPROC is its user's count plus
                       ///< this (shared by a uid's sandboxes); 0 also refuses fork in seccomp
   std::size_t outputBytes = 64u << 10;  ///< stdout+stderr kept; the rest is dropped

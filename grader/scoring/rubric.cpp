@@ -10,6 +10,8 @@
 #include <set>
 #include <sstream>
 
+#include "common/limits.h"
+
 namespace a6::grader {
 
 const char* toString(Visibility v) {
@@ -119,7 +121,10 @@ bool parseVisibility(const std::string& text, Visibility& out) {
 // Collects every problem with its line, so that a TA fixes the file in one pass.
 class Checker {
  public:
-  explicit Checker(std::string source) : source_(std::move(source)) {}
+  Checker(std::string source, const TaskTable& tasks) : source_(std::move(source)), tasks_(tasks) {}
+
+  /// The tasks an item may name.
+  const TaskTable& tasks() const { return tasks_; }
 
   void error(int line, const std::string& what) {
     std::ostringstream out;
@@ -183,6 +188,7 @@ class Checker {
 
  private:
   std::string source_;
+  const TaskTable& tasks_;
   std::vector<std::string> errors_;
 };
 
@@ -191,12 +197,15 @@ const std::vector<std::string> kItemKeys = {"name",       "task",           "tes
                                             "points",     "all_or_nothing", "extra_credit",
                                             "visibility", "time_limit"};
 
-// An item's `task`: 1..7 (7: the extra-credit implicit Euler), or 0 for none.
+// An item's `task`: a task of the table (harness/tasks.h), or 0 for none.
 void parseTask(const toml::node& node, int line, const std::string& where, Checker& check,
                RubricItem& item) {
   long long task = 0;
   if (check.integer(node, where, task)) {
-    if (task < 0 || task > 7) check.error(line, where + " must be 1..7, or 0 for none");
+    const int count = check.tasks().count();
+    if (task < 0 || task > count) {
+      check.error(line, where + " must be 1.." + std::to_string(count) + ", or 0 for none");
+    }
     item.task = static_cast<int>(task);
   }
 }
@@ -277,7 +286,7 @@ void parseItem(const toml::table& table, int index, Visibility defaultVisibility
 
 struct ItemDefaults {
   Visibility visibility = Visibility::Visible;
-  double timeLimit = 10;
+  double timeLimit = kDefaultTimeLimit;
 };
 
 // The top-level keys (the defaults apply to every item, wherever they appear).
@@ -347,10 +356,10 @@ void checkAcrossItems(const toml::table& root, Checker& check, const Rubric& rub
 
 }  // namespace
 
-Rubric parseRubric(const std::string& text, const std::string& sourceName) {
+Rubric parseRubric(const std::string& text, const std::string& sourceName, const TaskTable& tasks) {
   Rubric rubric;
   rubric.file = sourceName;
-  Checker check(sourceName);
+  Checker check(sourceName, tasks);
   toml::table root;
   try {
     root = toml::parse(text, sourceName);
@@ -386,12 +395,8 @@ Rubric loadRubric(const std::filesystem::path& file) {
 bool RubricItem::onHiddenChecks() const {
   if (tests.empty()) return false;
   for (const std::string& glob : tests) {
-    const std::string suite = glob.substr(0, glob.find('.'));
-    const std::string tag = "Hidden";
-    if (suite.size() < tag.size() ||
-        suite.compare(suite.size() - tag.size(), tag.size(), tag) != 0) {
-      return false;
-    }
+    const SuiteOwner owner = courseTasks().ofSuite(glob.substr(0, glob.find('.')));
+    if (owner.task == 0 || !isHidden(owner.kind)) return false;
   }
   return true;
 }

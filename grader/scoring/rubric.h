@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "harness/tasks.h"
+
 namespace a6::grader {
 
 enum class Visibility { Visible, Hidden, AfterDueDate, AfterPublished };
@@ -18,7 +20,7 @@ const char* toString(Visibility v);  ///< Gradescope's names: visible, hidden, a
 /// and ?) and no earlier item share `points`, split evenly, or all-or-nothing when `allOrNothing`.
 struct RubricItem {
   std::string name;                ///< shown in reports, e.g. "Task 1: spring force"
-  int task = 0;                    ///< 1..7, or 0 for none
+  int task = 0;                    ///< a task of harness/tasks.h, or 0 for none
   std::vector<std::string> tests;  ///< globs over "Suite.Test"; a test matching any of them
   double points = 0;
   bool allOrNothing = false;
@@ -51,7 +53,9 @@ struct Rubric {
 /// problem found, one per line.
 Rubric loadRubric(const std::filesystem::path& file);
 /// The same, from TOML text (`sourceName` names it in messages).
-Rubric parseRubric(const std::string& text, const std::string& sourceName);
+/// `tasks`: the tasks an item's `task` may name.
+Rubric parseRubric(const std::string& text, const std::string& sourceName,
+                   const TaskTable& tasks = courseTasks());
 
 /// The rubric a student release carries: `rubric` without its items on hidden checks, its total
 /// the sum of what is left, as TOML that loadRubric reads back (every value written out).

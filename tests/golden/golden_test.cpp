@@ -39,7 +39,7 @@
 #include "contexts/gl_context.h"
 #include "golden_checks.h"
 #include "golden_suite.h"
-#include "harness/task_files.h"
+#include "harness/tasks.h"
 #include "render/renderer.h"
 
 namespace a6::paths {
@@ -173,12 +173,12 @@ std::string header(const GoldenImage& image) {
 std::vector<int> failingEarlierTasks(const GoldenImage& image) {
   std::vector<int> out;
   const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
-  for (int t = 1; t <= kTaskCount; ++t) {
+  for (int t = 1; t <= courseTasks().count(); ++t) {
     if (t == image.task || !image.exercises(t)) continue;
-    const std::string prefix = "Task" + std::to_string(t);
     for (int k = 0; k < unit.total_test_suite_count(); ++k) {
       const ::testing::TestSuite& suite = *unit.GetTestSuite(k);
-      if (std::string(suite.name()).rfind(prefix, 0) == 0 && suite.failed_test_count() > 0) {
+      const SuiteOwner owner = courseTasks().ofSuite(suite.name());
+      if (owner.task == t && isPhysics(owner.kind) && suite.failed_test_count() > 0) {
         out.push_back(t);
         break;
       }
@@ -292,14 +292,14 @@ class ManifestError : public ::testing::Test {
   std::string error_;
 };
 
-// One test per image of `manifest` (of the tasks asked for), in suites GoldenTask<N><suffix>.
-void registerImages(const golden::Manifest& manifest, const std::string& suffix) {
+// One test per image of `manifest` (of the tasks asked for), in its task's suite of `kind`.
+void registerImages(const golden::Manifest& manifest, SuiteKind kind) {
   for (const GoldenImage& image : manifest.images) {
     bool wanted = config().tasks.empty();
     for (int task : config().tasks) wanted = wanted || image.exercises(task);
     if (!wanted) continue;
     Scenes::get().need(image.scene, image.frame);
-    const std::string suite = "GoldenTask" + std::to_string(image.task) + suffix;
+    const std::string suite = courseTasks().suite(image.task, kind);
     const std::string folder = manifest.folder;
     ::testing::RegisterTest(
         suite.c_str(), image.name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
@@ -307,9 +307,9 @@ void registerImages(const golden::Manifest& manifest, const std::string& suffix)
   }
 }
 
-// Registers the images of the manifest at `path` in suites GoldenTask<N><suffix> (false: it could
+// Registers the images of the manifest at `path` in their tasks' suites of `kind` (false: it could
 // not be read, and one failing test, Manifest.<errorTest>, says why).
-bool registerManifest(const std::string& path, const std::string& suffix, const char* errorTest) {
+bool registerManifest(const std::string& path, SuiteKind kind, const char* errorTest) {
   golden::ManifestResult read = golden::readManifest(path);
   if (!read) {
     const std::string error = read.error;
@@ -317,7 +317,7 @@ bool registerManifest(const std::string& path, const std::string& suffix, const 
                             [error]() -> ::testing::Test* { return new ManifestError(error); });
     return false;
   }
-  registerImages(read.manifest, suffix);
+  registerImages(read.manifest, kind);
   return true;
 }
 
@@ -351,11 +351,11 @@ std::string replayFolder() {
 bool registerGoldenChecks(const std::string& failuresDir, ImagePaths paths) {
   config().failures = std::filesystem::absolute(failuresDir).lexically_normal().string();
   config().showPaths = paths == ImagePaths::Shown;
-  if (!registerManifest(config().manifest, "", "Reads")) return false;
+  if (!registerManifest(config().manifest, SuiteKind::Golden, "Reads")) return false;
   const std::filesystem::path hidden =
       std::filesystem::path(config().manifest).parent_path() / "hidden" / "manifest.json";
   return !std::filesystem::exists(hidden) ||
-         registerManifest(hidden.string(), "Hidden", "ReadsHidden");
+         registerManifest(hidden.string(), SuiteKind::GoldenHidden, "ReadsHidden");
 }
 
 namespace {
@@ -432,7 +432,7 @@ std::set<int> parseTasks(const std::string& text) {
   std::string item;
   while (std::getline(in, item, ',')) {
     const int t = std::atoi(item.c_str());
-    if (t >= 1 && t <= kTaskCount) tasks.insert(t);
+    if (courseTasks().find(t) != nullptr) tasks.insert(t);
   }
   return tasks;
 }
@@ -479,7 +479,10 @@ int runGoldenTests(int argc, char** argv) {
   const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
   for (int s = 0; s < unit.total_test_suite_count(); ++s) {
     const ::testing::TestSuite& suite = *unit.GetTestSuite(s);
-    if (std::string(suite.name()).rfind("GoldenTask", 0) != 0) continue;
+    const SuiteOwner owner = courseTasks().ofSuite(suite.name());
+    if (owner.task == 0 ||
+        (owner.kind != SuiteKind::Golden && owner.kind != SuiteKind::GoldenHidden))
+      continue;
     for (int t = 0; t < suite.total_test_count(); ++t) {
       const ::testing::TestInfo& info = *suite.GetTestInfo(t);
       if (!info.should_run()) continue;

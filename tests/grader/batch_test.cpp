@@ -366,7 +366,7 @@ TEST(BatchParts, TheGradebookIsValidCsv) {
   graded.status = batch::kBuildFailed;
   graded.total = 88.5;
   graded.max = 100;
-  graded.tasks = {15, 15, 20, 3.5, 15, 20};
+  graded.tasks = {15, 15, 20, 3.5, 15, 20, std::nullopt};
   graded.extraCredit = 0;
   graded.seconds = 2.25;
   graded.mistakes = {"t1_wrong_sign", "t4_duplicate_springs"};
@@ -470,7 +470,7 @@ TEST(BatchParts, AMarkerHoldsTheOutcomeForItsFingerprintOnly) {
   o.status = batch::kGraded;
   o.total = 103;
   o.max = 100;
-  o.tasks = {15, 15, 20, 15, 15, 20};
+  o.tasks = {15, 15, 20, 15, 15, 20, std::nullopt};
   o.extraCredit = 3;
   o.seconds = 1.5;
   o.mistakes = {"t3_missing_pinning"};

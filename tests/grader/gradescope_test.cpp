@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/task_files.h"
+#include "harness/tasks.h"
 #include "run_command.h"
 #include "scoring/rubric.h"
 
@@ -38,7 +38,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-using a6::kTaskFiles;  // harness/task_files.h
+using a6::kTaskFiles;  // harness/tasks.h
 
 using Outcome = a6::test::CommandRun;
 
@@ -517,10 +517,21 @@ TEST(Gradescope, WithoutAWorkingGraderResultsAreStillValid) {
   EXPECT_EQ(j["score"].get<double>(), 0);
   EXPECT_TRUE(contains(j.value("output", ""), "is missing")) << j.dump(2);
 
-  // Crashes half-way, leaving its placeholder ("grading did not finish") behind.
+  // Gives no limits (run_autograder reads its time limits from a6_grade --list-limits).
+  std::ofstream(grader) << "#!/bin/sh\nexit 1\n";
+  fs::permissions(grader, fs::perms::owner_all);
+  r = runAutograder();
+  EXPECT_EQ(r.status, 0) << tail(r.output);
+  j = results(r);
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_TRUE(contains(j.value("output", ""), "gave no time limits")) << j.dump(2);
+
+  // Crashes half-way, leaving its placeholder ("grading did not finish") behind; its limits are
+  // the real grader's.
   std::ofstream(grader)
       << "#!/bin/sh\n"
-         "while [ $# -gt 0 ]; do [ \"$1\" = --out ] && out=$2; shift; done\n"
+      << "[ \"$1\" = --list-limits ] && exec '" << saved.string() << "' --list-limits\n"
+      << "while [ $# -gt 0 ]; do [ \"$1\" = --out ] && out=$2; shift; done\n"
          "mkdir -p \"$out\"\n"
          "printf '{\"score\": 0, \"output\": \"grading did not finish (the grader was killed "
          "or ran out of time)\"}' "

@@ -38,7 +38,7 @@
 #include <vector>
 
 #include "common/fnv1a.h"
-#include "grading/budgets.h"
+#include "common/limits.h"
 #include "poisoner.h"
 #include "run_command.h"
 #include "scoring/rubric.h"

@@ -143,12 +143,14 @@ TEST(Insights, ChecksNearlyEveryoneFailsOrNobodyFailsAreFlagged) {
   EXPECT_EQ(pass, (std::vector<std::string>{"GoldenTask7.x", "Task1Spring.B"}));
 }
 
-TEST(Insights, TheTaskOfACheckIsInItsName) {
+TEST(Insights, TheTaskOfACheckIsItsSuitesTask) {
   EXPECT_EQ(taskOfCheck("Task4Cloth.X"), 4);
   EXPECT_EQ(taskOfCheck("GoldenTask6.car_f90"), 6);
   EXPECT_EQ(taskOfCheck("Task2Hidden.Y"), 2);
+  EXPECT_EQ(taskOfCheck("GoldenTask6Hidden.car_f90"), 6);
   EXPECT_EQ(taskOfCheck("Sanity.Z"), 0);
   EXPECT_EQ(taskOfCheck("Task"), 0);
+  EXPECT_EQ(taskOfCheck("Task10Rope.X"), 0) << "task 1 read from the 1 of 10";
 }
 
 TEST(Insights, ThePageNamesEveryItemAndEscapesWhatSubmissionsWrote) {

@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/task_files.h"
+#include "harness/tasks.h"
 
 #ifndef A6_SOURCE_DIR
 #error "define A6_SOURCE_DIR (the repository) to include staging.h"
@@ -35,7 +35,7 @@ namespace a6::test::staging {
 
 namespace fs = std::filesystem;
 
-using a6::kTaskFiles;  // harness/task_files.h
+using a6::kTaskFiles;  // harness/tasks.h
 inline const fs::path kSource = A6_SOURCE_DIR;
 inline const fs::path kFixtures = kSource / "tests" / "grader" / "submissions";
 

@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "comparisons.h"
-#include "harness/task_files.h"
+#include "harness/tasks.h"
 #include "quantities.h"
 
 namespace a6::test {
@@ -12,9 +12,9 @@ namespace a6::test {
 std::string currentTask() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string suite = info != nullptr ? info->test_suite_name() : "";
-  const int task = suite.size() >= 5 && suite.compare(0, 4, "Task") == 0 ? suite[4] - '0' : 0;
-  if (!taskFile(task).empty()) return "Task " + std::to_string(task) + " (" + taskFile(task) + ")";
-  return "Task ?";
+  const int task = courseTasks().ofSuite(suite).task;
+  if (task == 0) return "Task ?";
+  return "Task " + std::to_string(task) + " (" + courseTasks().file(task) + ")";
 }
 
 std::string num(double value) {

@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
+#include <vector>
 
-#include "harness/task_files.h"
+#include "harness/tasks.h"
 
 namespace a6::test {
 
@@ -26,8 +26,9 @@ class TaskSummary : public ::testing::EmptyTestEventListener {
 
  private:
   bool pointToTasks_ = false;
-  std::array<int, kTaskCount> passed_{}, failed_{};
-  std::array<double, kTaskCount> margin_{}, closest_{}, agreement_{};
+  // Per task, task t at [t - 1].
+  std::vector<int> passed_, failed_;
+  std::vector<double> margin_, closest_, agreement_;
 };
 
 }  // namespace a6::test
