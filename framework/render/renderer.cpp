@@ -40,29 +40,38 @@ Renderer::Renderer(GLContext& context) : context_(context) {
     fail("Renderer: " + missing);
     return;
   }
+  if (!buildProgram()) return;
+  makeVertexBuffer();
+  if (GLenum e = gl_.GetError(); e != GL_NO_ERROR) {
+    fail("Renderer: setting up failed with " + glErrorName(e));
+  }
+}
 
-  // Shaders.
-  auto compile = [this](GLenum kind, const char* source, const char* name) -> GLuint {
-    GLuint shader = gl_.CreateShader(kind);
-    gl_.ShaderSource(shader, 1, &source, nullptr);
-    gl_.CompileShader(shader);
-    GLint compiled = GL_FALSE;
-    gl_.GetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
-    if (!compiled) {
-      char log[2048] = {};
-      gl_.GetShaderInfoLog(shader, sizeof log, nullptr, log);
-      fail(std::string("Renderer: the ") + name + " shader does not compile on " +
-           context_.description() + ": " + log);
-      gl_.DeleteShader(shader);
-      return 0;
-    }
-    return shader;
-  };
-  GLuint vertex = compile(GL_VERTEX_SHADER, kVertexShader, "vertex");
-  GLuint fragment = vertex ? compile(GL_FRAGMENT_SHADER, kFragmentShader, "fragment") : 0;
+// A compiled shader, or 0 (and error() says why).
+GLuint Renderer::compileShader(GLenum kind, const char* source, const char* name) {
+  GLuint shader = gl_.CreateShader(kind);
+  gl_.ShaderSource(shader, 1, &source, nullptr);
+  gl_.CompileShader(shader);
+  GLint compiled = GL_FALSE;
+  gl_.GetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+  if (!compiled) {
+    char log[2048] = {};
+    gl_.GetShaderInfoLog(shader, sizeof log, nullptr, log);
+    fail(std::string("Renderer: the ") + name + " shader does not compile on " +
+         context_.description() + ": " + log);
+    gl_.DeleteShader(shader);
+    return 0;
+  }
+  return shader;
+}
+
+// The shaders, compiled and linked into program_.
+bool Renderer::buildProgram() {
+  GLuint vertex = compileShader(GL_VERTEX_SHADER, kVertexShader, "vertex");
+  GLuint fragment = vertex ? compileShader(GL_FRAGMENT_SHADER, kFragmentShader, "fragment") : 0;
   if (!vertex || !fragment) {
     if (vertex) gl_.DeleteShader(vertex);
-    return;
+    return false;
   }
   program_ = gl_.CreateProgram();
   gl_.AttachShader(program_, vertex);
@@ -75,11 +84,13 @@ Renderer::Renderer(GLContext& context) : context_(context) {
   if (!linked) {
     char log[2048] = {};
     gl_.GetProgramInfoLog(program_, sizeof log, nullptr, log);
-    fail(std::string("Renderer: the shaders do not link: ") + log);
-    return;
+    return fail(std::string("Renderer: the shaders do not link: ") + log);
   }
+  return true;
+}
 
-  // One vertex buffer, refilled per frame: position (2 floats), colour (4 normalized bytes).
+// One vertex buffer, refilled per frame: position (2 floats), colour (4 normalized bytes).
+void Renderer::makeVertexBuffer() {
   gl_.GenVertexArrays(1, &vertexArray_);
   gl_.GenBuffers(1, &vertexBuffer_);
   gl_.BindVertexArray(vertexArray_);
@@ -92,9 +103,6 @@ Renderer::Renderer(GLContext& context) : context_(context) {
   gl_.EnableVertexAttribArray(1);
   gl_.BindVertexArray(0);
   gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
-  if (GLenum e = gl_.GetError(); e != GL_NO_ERROR) {
-    fail("Renderer: setting up failed with " + glErrorName(e));
-  }
 }
 
 Renderer::~Renderer() {

@@ -52,6 +52,9 @@ class Renderer {
 
  private:
   bool fail(const std::string& message);
+  GLuint compileShader(GLenum kind, const char* source, const char* name);
+  bool buildProgram();
+  void makeVertexBuffer();
   bool ensureFramebuffer(int width, int height);
 
   GLContext& context_;

@@ -382,60 +382,65 @@ Entry entry(SceneInfo info, SceneParams defaults, MassSpringDef def) {
   return e;
 }
 
-}  // namespace
+// Task 1: one spring.
+Entry singleSpring() {
+  SceneParams p;
+  p.ks = 100;
+  p.kd = 0;
+  p.substeps = 10;
+  MassSpringDef d;
+  d.build = single_spring::build;
+  d.view = View{Vec2(0, 0.55), 1.3};
+  d.particleRadius = 0.04;
+  return entry({"single_spring", "A single spring",
+                "A 1 kg mass on a 100 N/m spring, released stretched: it oscillates "
+                "about its equilibrium with period 0.63 s, and its energy stays bounded.",
+                1, kMassSpringUses},
+               p, d);
+}
 
-void scene_registry::addMassSpringScenes(std::vector<Entry>& out) {
+// Task 3: a chain of springs.
+Entry hangingChain() {
+  SceneParams p;
+  p.ks = 1000;
+  p.kd = 0.1;
+  p.substeps = 10;
+  p.drag = 0.01;
+  MassSpringDef d;
+  d.build = hanging_chain::build;
+  d.view = View{Vec2(0, 0.45), 1.7};
+  d.particleRadius = 0.025;
+  return entry({"hanging_chain", "A hanging chain",
+                "Ten particles on springs, pinned at one end and released horizontal: "
+                "the chain swings down and settles hanging.",
+                3, kMassSpringUses},
+               p, d);
+}
+
+// Task 2: a ball of springs against obstacles.
+Entry softBody() {
+  SceneParams p;
+  p.ks = 500;
+  p.kd = 0.5;
+  p.substeps = 10;
+  p.drag = 0.05;
+  MassSpringDef d;
+  d.build = soft_body::build;
+  d.view = View{Vec2(0.4, 1.05), 2.5};
+  d.particleRadius = 0.02;
+  d.ksScale = {1, 1, 0.5, 1};
+  d.kdScale = {1, 1, 0.5, 1};
+  return entry({"soft_body", "A soft ball on obstacles",
+                "A ball of springs falls on a peg and into a valley between two ramps; "
+                "the obstacles push back with the repulsion force k_r d n.",
+                2, kMassSpringUses},
+               p, d);
+}
+
+// The cloth (task 4) with one more spring type each time, then stiff: one step and ten
+// substeps (task 3), one implicit step (task 7).
+void addClothScenes(std::vector<Entry>& out) {
   constexpr unsigned kClothUses = kMassSpringUses | kUsesN | kUsesSpringTypes;
-
-  {
-    SceneParams p;
-    p.ks = 100;
-    p.kd = 0;
-    p.substeps = 10;
-    MassSpringDef d;
-    d.build = single_spring::build;
-    d.view = View{Vec2(0, 0.55), 1.3};
-    d.particleRadius = 0.04;
-    out.push_back(entry({"single_spring", "A single spring",
-                         "A 1 kg mass on a 100 N/m spring, released stretched: it oscillates "
-                         "about its equilibrium with period 0.63 s, and its energy stays bounded.",
-                         1, kMassSpringUses},
-                        p, d));
-  }
-  {
-    SceneParams p;
-    p.ks = 1000;
-    p.kd = 0.1;
-    p.substeps = 10;
-    p.drag = 0.01;
-    MassSpringDef d;
-    d.build = hanging_chain::build;
-    d.view = View{Vec2(0, 0.45), 1.7};
-    d.particleRadius = 0.025;
-    out.push_back(entry({"hanging_chain", "A hanging chain",
-                         "Ten particles on springs, pinned at one end and released horizontal: "
-                         "the chain swings down and settles hanging.",
-                         3, kMassSpringUses},
-                        p, d));
-  }
-  {
-    SceneParams p;
-    p.ks = 500;
-    p.kd = 0.5;
-    p.substeps = 10;
-    p.drag = 0.05;
-    MassSpringDef d;
-    d.build = soft_body::build;
-    d.view = View{Vec2(0.4, 1.05), 2.5};
-    d.particleRadius = 0.02;
-    d.ksScale = {1, 1, 0.5, 1};
-    d.kdScale = {1, 1, 0.5, 1};
-    out.push_back(entry({"soft_body", "A soft ball on obstacles",
-                         "A ball of springs falls on a peg and into a valley between two ramps; "
-                         "the obstacles push back with the repulsion force k_r d n.",
-                         2, kMassSpringUses},
-                        p, d));
-  }
   out.push_back(entry({"cloth_structural", "Cloth: structural springs only",
                        "Without shear springs nothing resists shearing: the cloth folds and "
                        "collapses under its own weight.",
@@ -466,6 +471,15 @@ void scene_registry::addMassSpringScenes(std::vector<Entry>& out) {
                        "Switch the integrator to compare it with stiff_cloth_1.",
                        7, kClothUses},
                       stiffClothParams(1, true), cloth::def(kClothParticleMass)));
+}
+
+}  // namespace
+
+void scene_registry::addMassSpringScenes(std::vector<Entry>& out) {
+  out.push_back(singleSpring());
+  out.push_back(hangingChain());
+  out.push_back(softBody());
+  addClothScenes(out);
 }
 
 }  // namespace a6

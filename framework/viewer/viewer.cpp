@@ -65,6 +65,62 @@ bool sliderDouble(const char* label, double* value, double lo, double hi, const 
   return changed;
 }
 
+// The springs' sliders the scene uses: ks, kd, substeps. Ranges around the scene's defaults: a
+// hundred times either way on a log scale.
+void springControls(unsigned uses, const SceneParams& defaults, SceneParams& p) {
+  const double ks0 = std::max(defaults.ks, 1.0);
+  if (uses & kUsesKs) {
+    sliderDouble("ks (N/m)", &p.ks, ks0 * 0.01, ks0 * 100, "%.4g", true,
+                 "Spring stiffness ks (cloth: structural; shear and bending keep their ratio)");
+  }
+  if (uses & kUsesKd) {
+    sliderDouble("kd (N s/m)", &p.kd, 0.0, std::max(defaults.kd * 100, 10.0), "%.4g", true,
+                 "Spring damping kd, along the spring");
+  }
+  if (uses & kUsesSubsteps) {
+    ImGui::SliderInt("substeps", &p.substeps, 1, 200, "%d", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("Steps per frame: each step is dt / substeps. Stiff springs need more.");
+    }
+  }
+}
+
+// The rest the scene uses: frame time, cloth size, the world's forces, spring types, seed.
+void worldControls(unsigned uses, const SceneParams& defaults, SceneParams& p) {
+  if (uses & kUsesDt) {
+    sliderDouble("dt (s)", &p.dt, 0.001, 0.1, "%.4f", true,
+                 "Duration of one frame; one frame is simulated per frame shown");
+  }
+  if (uses & kUsesN) {
+    ImGui::SliderInt("n (cells)", &p.n, 1, 60);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Cloth resolution: n x n cells (resets)");
+  }
+  if (uses & kUsesGravity) {
+    sliderDouble("gravity (m/s²)", &p.gravity, 0.0, 30.0, "%.2f", false,
+                 "Magnitude of g, along -y");
+  }
+  if (uses & kUsesDrag) {
+    sliderDouble("drag (N s/m)", &p.drag, 0.0, std::max(defaults.drag * 100, 1.0), "%.4g", true,
+                 "Drag coefficient: f = -kd v");
+  }
+  if (uses & kUsesBuoyancy) {
+    sliderDouble("buoyancy (N/K)", &p.buoyancy, 0.0, std::max(defaults.buoyancy * 10, 1e-3), "%.3g",
+                 true, "Buoyancy coefficient: f = b (T - T_air) (0, 1)");
+  }
+  if (uses & kUsesSpringTypes) {
+    ImGui::Text("Build with:");
+    ImGui::SameLine();
+    ImGui::Checkbox("structural", &p.structural);
+    ImGui::SameLine();
+    ImGui::Checkbox("shear", &p.shear);
+    ImGui::SameLine();
+    ImGui::Checkbox("bending", &p.bending);
+  }
+  if (uses & kUsesSeed) {
+    ImGui::InputScalar("seed", ImGuiDataType_U64, &p.seed);
+  }
+}
+
 }  // namespace
 
 Viewer::Viewer(Options options) : options_(std::move(options)) {
@@ -551,77 +607,34 @@ void Viewer::parameterSection() {
   const unsigned uses = info->uses;
   const SceneParams defaults = defaultParams(sceneName_);
   SceneParams p = params_;
-  // Ranges around the scene's defaults: a hundred times either way on a log scale.
-  const double ks0 = std::max(defaults.ks, 1.0);
-  if (uses & kUsesKs) {
-    sliderDouble("ks (N/m)", &p.ks, ks0 * 0.01, ks0 * 100, "%.4g", true,
-                 "Spring stiffness ks (cloth: structural; shear and bending keep their ratio)");
-  }
-  if (uses & kUsesKd) {
-    sliderDouble("kd (N s/m)", &p.kd, 0.0, std::max(defaults.kd * 100, 10.0), "%.4g", true,
-                 "Spring damping kd, along the spring");
-  }
-  if (uses & kUsesSubsteps) {
-    ImGui::SliderInt("substeps", &p.substeps, 1, 200, "%d", ImGuiSliderFlags_Logarithmic);
-    if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("Steps per frame: each step is dt / substeps. Stiff springs need more.");
-    }
-  }
-  if (uses & kUsesIntegrator) {
-    // Task 7: switch the running scene between task 3's step and task 7's stepImplicit, and
-    // watch the energy plot: symplectic Euler keeps it (or explodes), implicit Euler damps it.
-    int integrator = p.implicit ? 1 : 0;
-    ImGui::Text("Integrator:");
-    ImGui::SameLine();
-    ImGui::RadioButton("symplectic (task 3)", &integrator, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("implicit (task 7)", &integrator, 1);
-    if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("stepImplicit: one backward Euler step per substep, stable at any dt");
-    }
-    p.implicit = integrator == 1;
-    // Both at once: the twin runs the other integrator beside the scene, from frame 0.
-    if (ImGui::Checkbox("side by side", &sideBySide_)) {
-      resetScene(p);
-      return;
-    }
-    if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("The scene twice: symplectic Euler left, implicit Euler right");
-    }
-  }
-  if (uses & kUsesDt) {
-    sliderDouble("dt (s)", &p.dt, 0.001, 0.1, "%.4f", true,
-                 "Duration of one frame; one frame is simulated per frame shown");
-  }
-  if (uses & kUsesN) {
-    ImGui::SliderInt("n (cells)", &p.n, 1, 60);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Cloth resolution: n x n cells (resets)");
-  }
-  if (uses & kUsesGravity) {
-    sliderDouble("gravity (m/s²)", &p.gravity, 0.0, 30.0, "%.2f", false,
-                 "Magnitude of g, along -y");
-  }
-  if (uses & kUsesDrag) {
-    sliderDouble("drag (N s/m)", &p.drag, 0.0, std::max(defaults.drag * 100, 1.0), "%.4g", true,
-                 "Drag coefficient: f = -kd v");
-  }
-  if (uses & kUsesBuoyancy) {
-    sliderDouble("buoyancy (N/K)", &p.buoyancy, 0.0, std::max(defaults.buoyancy * 10, 1e-3), "%.3g",
-                 true, "Buoyancy coefficient: f = b (T - T_air) (0, 1)");
-  }
-  if (uses & kUsesSpringTypes) {
-    ImGui::Text("Build with:");
-    ImGui::SameLine();
-    ImGui::Checkbox("structural", &p.structural);
-    ImGui::SameLine();
-    ImGui::Checkbox("shear", &p.shear);
-    ImGui::SameLine();
-    ImGui::Checkbox("bending", &p.bending);
-  }
-  if (uses & kUsesSeed) {
-    ImGui::InputScalar("seed", ImGuiDataType_U64, &p.seed);
-  }
+  springControls(uses, defaults, p);
+  if ((uses & kUsesIntegrator) && integratorControls(p)) return;
+  worldControls(uses, defaults, p);
   if (!sameParams(p, params_)) applyParams(p);
+}
+
+bool Viewer::integratorControls(SceneParams& p) {
+  // Task 7: switch the running scene between task 3's step and task 7's stepImplicit, and
+  // watch the energy plot: symplectic Euler keeps it (or explodes), implicit Euler damps it.
+  int integrator = p.implicit ? 1 : 0;
+  ImGui::Text("Integrator:");
+  ImGui::SameLine();
+  ImGui::RadioButton("symplectic (task 3)", &integrator, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("implicit (task 7)", &integrator, 1);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("stepImplicit: one backward Euler step per substep, stable at any dt");
+  }
+  p.implicit = integrator == 1;
+  // Both at once: the twin runs the other integrator beside the scene, from frame 0.
+  if (ImGui::Checkbox("side by side", &sideBySide_)) {
+    resetScene(p);
+    return true;
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("The scene twice: symplectic Euler left, implicit Euler right");
+  }
+  return false;
 }
 
 void Viewer::displaySection() {

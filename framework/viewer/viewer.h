@@ -78,6 +78,7 @@ class Viewer {
   void sceneSection();
   void simulationSection();
   void parameterSection();
+  bool integratorControls(SceneParams& p);  ///< true when it reset the scene
   void displaySection();
   void energySection();
   void timingSection();

@@ -23,6 +23,47 @@ bool parseSize(const std::string& text, int* width, int* height) {
          parseInt(text.substr(x + 1), 16, 8192, height);
 }
 
+// The switches (options without a value), and what each sets.
+struct Switch {
+  const char* name;
+  bool Options::*field;
+  bool value;
+};
+constexpr Switch kSwitches[] = {{"--no-gui", &Options::gui, false},
+                                {"--paused", &Options::paused, true},
+                                {"--side-by-side", &Options::sideBySide, true},
+                                {"--no-vsync", &Options::vsync, false},
+                                {"--list", &Options::list, true}};
+
+const Switch* findSwitch(const std::string& name) {
+  for (const Switch& s : kSwitches) {
+    if (name == s.name) return &s;
+  }
+  return nullptr;
+}
+
+bool takesValue(const std::string& name) {
+  return name == "--scene" || name == "--size" || name == "--frames" || name == "--screenshot";
+}
+
+// An option that takes a value: sets it; returns what is wrong with the value, or nothing.
+std::string setValue(const std::string& name, const std::string& value, Options& o) {
+  if (name == "--scene") {
+    o.scene = value;
+  } else if (name == "--size") {
+    if (!parseSize(value, &o.width, &o.height)) {
+      return "--size " + value + ": expected WxH, e.g. 800x600 (16 to 8192 pixels a side)";
+    }
+  } else if (name == "--frames") {
+    if (!parseInt(value, 0, 1000000, &o.frames)) {
+      return "--frames " + value + ": expected a whole number of frames, 0 or more";
+    }
+  } else if (name == "--screenshot") {
+    o.screenshot = value;
+  }
+  return "";
+}
+
 }  // namespace
 
 ParseResult parseOptions(const std::vector<std::string>& args) {
@@ -38,56 +79,23 @@ ParseResult parseOptions(const std::vector<std::string>& args) {
       name = name.substr(0, eq);
       inlineValue = true;
     }
-    auto takeValue = [&]() -> bool {
-      if (inlineValue) return true;
-      if (k + 1 >= args.size()) {
-        result.error = name + " needs a value";
-        return false;
-      }
-      value = args[++k];
-      return true;
-    };
-    auto noValue = [&]() -> bool {
-      if (inlineValue) result.error = name + " takes no value";
-      return !inlineValue;
-    };
 
-    if (name == "--scene") {
-      if (!takeValue()) return result;
-      o.scene = value;
-    } else if (name == "--size") {
-      if (!takeValue()) return result;
-      if (!parseSize(value, &o.width, &o.height)) {
-        result.error =
-            "--size " + value + ": expected WxH, e.g. 800x600 (16 to 8192 pixels a side)";
-        return result;
-      }
-    } else if (name == "--frames") {
-      if (!takeValue()) return result;
-      if (!parseInt(value, 0, 1000000, &o.frames)) {
-        result.error = "--frames " + value + ": expected a whole number of frames, 0 or more";
-        return result;
-      }
-    } else if (name == "--screenshot") {
-      if (!takeValue()) return result;
-      o.screenshot = value;
-    } else if (name == "--no-gui") {
-      if (!noValue()) return result;
-      o.gui = false;
-    } else if (name == "--paused") {
-      if (!noValue()) return result;
-      o.paused = true;
-    } else if (name == "--side-by-side") {
-      if (!noValue()) return result;
-      o.sideBySide = true;
-    } else if (name == "--no-vsync") {
-      if (!noValue()) return result;
-      o.vsync = false;
-    } else if (name == "--list") {
-      if (!noValue()) return result;
-      o.list = true;
-    } else if (name == "--help" || name == "-h") {
+    if (name == "--help" || name == "-h") {
       o.help = true;
+    } else if (const Switch* s = findSwitch(name)) {
+      if (inlineValue) {
+        result.error = name + " takes no value";
+        return result;
+      }
+      o.*(s->field) = s->value;
+    } else if (takesValue(name)) {
+      if (!inlineValue && k + 1 >= args.size()) {
+        result.error = name + " needs a value";
+        return result;
+      }
+      if (!inlineValue) value = args[++k];
+      result.error = setValue(name, value, o);
+      if (!result.error.empty()) return result;
     } else {
       result.error = "unknown option '" + args[k] + "'";
       return result;

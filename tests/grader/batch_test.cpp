@@ -42,6 +42,7 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace batch = a6::grader::batch;
+namespace staging = a6::test::staging;
 using a6::test::staging::kSource;
 using a6::test::staging::kTaskFiles;
 using a6::test::staging::readAll;
@@ -353,6 +354,26 @@ TEST(BatchParts, SafeNamesNeverLeaveTheFolder) {
   EXPECT_EQ(batch::safeName("a/b\\c"), "a_b_c");
 }
 
+// Outcomes for the gradebook's cases: a group's grade (with two known mistakes) and a grading
+// that timed out.
+batch::Outcome gradedWithMistakes() {
+  batch::Outcome graded;
+  graded.status = batch::kBuildFailed;
+  graded.total = 88.5;
+  graded.max = 100;
+  graded.tasks = {15, 15, 20, 3.5, 15, 20, std::nullopt};
+  graded.extraCredit = 0;
+  graded.seconds = 2.25;
+  graded.mistakes = {"t1_wrong_sign", "t4_duplicate_springs"};
+  return graded;
+}
+
+batch::Outcome timedOut() {
+  batch::Outcome o;
+  o.status = batch::kTimedOut;
+  return o;
+}
+
 TEST(BatchParts, TheGradebookIsValidCsv) {
   EXPECT_EQ(batch::csvField("plain"), "plain");
   EXPECT_EQ(batch::csvField("Doe, Jane"), "\"Doe, Jane\"");
@@ -362,20 +383,12 @@ TEST(BatchParts, TheGradebookIsValidCsv) {
   batch::Submission s;
   s.key = "group";
   s.people = {{"Doe, Jane", "jane@example.edu", "1"}, {"Bob \"B\"", "", "2"}};
-  batch::Outcome graded;
-  graded.status = batch::kBuildFailed;
-  graded.total = 88.5;
-  graded.max = 100;
-  graded.tasks = {15, 15, 20, 3.5, 15, 20, std::nullopt};
-  graded.extraCredit = 0;
-  graded.seconds = 2.25;
-  graded.mistakes = {"t1_wrong_sign", "t4_duplicate_springs"};
+  const batch::Outcome graded = gradedWithMistakes();
   batch::Submission t;
   t.key = "hung";
   t.people = {{"hung", "", ""}};
-  batch::Outcome timedOut;
-  timedOut.status = batch::kTimedOut;
-  const std::string csv = batch::gradebookCsv({{&s, &graded}, {&t, &timedOut}});
+  const batch::Outcome hung = timedOut();
+  const std::string csv = batch::gradebookCsv({{&s, &graded}, {&t, &hung}});
   const auto records = parseCsv(csv);
   ASSERT_EQ(records.size(), 4u) << csv;
   EXPECT_EQ(records[0], kHeader);
@@ -395,15 +408,18 @@ TEST(BatchParts, TheGradebookIsValidCsv) {
   EXPECT_EQ(at(records[1], "mistakes"), "t1_wrong_sign t4_duplicate_springs");
   EXPECT_EQ(at(records[3], "mistakes"), "");
   for (const auto& r : records) EXPECT_EQ(r.size(), kHeader.size()) << csv;
+}
 
+TEST(BatchParts, TheSummaryCountsTheMistakesAndDrawsTheScores) {
   // How many submissions made each known mistake, most often first.
+  const batch::Outcome graded = gradedWithMistakes(), hung = timedOut();
   batch::Outcome other;
   other.mistakes = {"t4_duplicate_springs"};
-  const std::string counts = batch::mistakeCounts({&graded, &other, &timedOut});
+  const std::string counts = batch::mistakeCounts({&graded, &other, &hung});
   EXPECT_LT(counts.find("t4_duplicate_springs"), counts.find("t1_wrong_sign")) << counts;
   EXPECT_NE(counts.find("2 submissions"), std::string::npos) << counts;
   EXPECT_NE(counts.find("1 submission\n"), std::string::npos) << counts;
-  EXPECT_EQ(batch::mistakeCounts({&timedOut}), "");
+  EXPECT_EQ(batch::mistakeCounts({&hung}), "");
   // Read from results.json's extra_data.mistakes.
   const batch::Outcome read = batch::outcomeOfResults(
       R"({"score": 5, "tests": [], "extra_data": {"errors": [], "build": {},
@@ -564,35 +580,37 @@ TEST(Batch, ABadCommandLineOrInputExitsWith2) {
   EXPECT_NE(help.output.find("--timeout"), std::string::npos) << help.output;
 }
 
-// A class of every kind in one batch with -j 2, checked row by row: the solution, the starter,
-// one wrong version of each task, hostile submissions that break the build or hang the probe
-// before main (and those a batch must keep apart: one that writes files, one that floods its
-// output), the archive cases, a damaged archive, an empty folder, a stray file. Every wrong
-// version and every hostile submission is graded on its own by the grader_scores_* and
-// grader_hostile_* tests; here the batch must keep each one's row right beside the others.
-TEST(Batch, GradesOneOfEveryKindOfSubmission) {
-  namespace staging = a6::test::staging;
-  const fs::path dir = caseDir("everything");
-  const fs::path in = dir / "submissions";
-  std::set<std::string> students;
-  auto add = [&](const std::string& name) { students.insert(name); };
+// ---- a class of every kind ---------------------------------------------------------------------
 
+// The submissions of GradesOneOfEveryKindOfSubmission, and the rubric's points they are held to.
+struct Class {
+  std::set<std::string> students;        ///< every submission's row name
+  std::vector<std::string> wrong;        ///< the wrong versions among them (without "wrong_")
+  std::map<int, double> regular, extra;  ///< the rubric's points per task
+  double full = 0, fullExtra = 0;        ///< and in all
+};
+
+// The solution, the starter, and one wrong version with a named mistake, for the gradebook's
+// mistakes column and task columns (every wrong version is graded on its own by its ctest entry,
+// wrong_<name>).
+void stageKnownScores(const fs::path& in, Class& c) {
   fs::create_directories(in);
   fs::copy(kSource / "solution", in / "solution", fs::copy_options::recursive);
-  add("solution");
+  c.students.insert("solution");
   fs::copy(kSource / "starter", in / "starter", fs::copy_options::recursive);
-  add("starter");
-  // A wrong version with a named mistake, for the gradebook's mistakes column and task columns
-  // (every wrong version is graded on its own by its ctest entry, wrong_<name>).
-  std::vector<std::string> wrong;
+  c.students.insert("starter");
   for (const std::string& name : staging::wrongVersions()) {
-    if (wrong.empty() && !staging::expectedMistake(name).empty()) wrong.push_back(name);
+    if (c.wrong.empty() && !staging::expectedMistake(name).empty()) c.wrong.push_back(name);
   }
-  ASSERT_EQ(wrong.size(), 1u) << "no wrong version has a named mistake";
-  for (const std::string& name : wrong) {
+  ASSERT_EQ(c.wrong.size(), 1u) << "no wrong version has a named mistake";
+  for (const std::string& name : c.wrong) {
     staging::stageWrong(in / ("wrong_" + name), name);
-    add("wrong_" + name);
+    c.students.insert("wrong_" + name);
   }
+}
+
+// Hostile submissions, the archive cases, a damaged archive, an empty folder, a stray file.
+void stageHostileOnes(const fs::path& in, Class& c) {
   // (Not the fork bomb, nor the endless loop in the tasks' code: with this test's 2 s limit they
   // cost their whole time budget, 2 minutes, and grader_hostile_* grade them on their own, the
   // loop with fewer checks of task 1. Of the code that ends or hangs before main, only the hang:
@@ -604,111 +622,91 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
   for (const std::string& fixture : staging::fixtures()) {
     if (hostile.count(fixture) == 0) continue;
     staging::stage(in / ("hostile_" + fixture), fixture, {}, staging::omittedBy(fixture));
-    add("hostile_" + fixture);
+    c.students.insert("hostile_" + fixture);
   }
-  ASSERT_EQ(std::count_if(students.begin(), students.end(),
+  ASSERT_EQ(std::count_if(c.students.begin(), c.students.end(),
                           [](const std::string& s) { return s.rfind("hostile_", 0) == 0; }),
             static_cast<std::ptrdiff_t>(hostile.size()))
       << "a hostile fixture of this test is gone from tests/grader/submissions";
-  for (const staging::ArchiveCase& c : staging::archiveCases()) {
-    const std::string ext = c.zip() ? ".zip" : ".tar.gz";
-    ASSERT_EQ(staging::writeArchive(in / ("hostile_" + c.name + ext), c.zip(), c.entries), "");
-    add("hostile_" + c.name);
+  for (const staging::ArchiveCase& a : staging::archiveCases()) {
+    const std::string ext = a.zip() ? ".zip" : ".tar.gz";
+    ASSERT_EQ(staging::writeArchive(in / ("hostile_" + a.name + ext), a.zip(), a.entries), "");
+    c.students.insert("hostile_" + a.name);
   }
   // A damaged archive (cut inside its first file's data, so that no task file is whole), an
   // empty folder, and something that is no submission at all.
   std::string zip = readAll(in / "hostile_zip_traversal.zip");
   writeAll(in / "corrupt.zip", zip.substr(0, 100) + std::string(200, '\x7f'));
-  add("corrupt");
+  c.students.insert("corrupt");
   fs::create_directories(in / "empty");
-  add("empty");
+  c.students.insert("empty");
   writeAll(in / "README.txt", "submissions downloaded on Monday");
-  ASSERT_GE(students.size(), 16u);
+}
 
-  // Short time limits for the cases that never return (the correct checks take hundredths of
-  // a second): the endless loop costs task 1's checks 2 s each.
-  const fs::path rubricFile = staging::withTimeLimit(A6_DEFAULT_RUBRIC, dir, 2);
-  const Ran r =
-      batchRun(in, dir / "out",
-               "-j 2 --timeout 600 --time-budget 120 --similarity --rubric " + quoted(rubricFile));
-  std::printf("%s", r.output.substr(r.output.find("a6_batch: ")).c_str());
-  EXPECT_EQ(r.status, 0) << "every submission has a grade\n" << r.output;
-  EXPECT_NE(r.output.find("README.txt"), std::string::npos) << "the stray file is noted";
-  EXPECT_EQ(counted(r.output, "graded") + counted(r.output, "build failed") +
-                counted(r.output, "not graded"),
-            static_cast<int>(students.size()))
-      << r.output;
-
-  const Gradebook g = readGradebook(dir / "out" / "gradebook.csv");
-  ASSERT_EQ(g.error, "");
-  EXPECT_EQ(g.header, kHeader);
-  EXPECT_EQ(g.rows.size(), students.size());
-  for (const std::string& s : students) EXPECT_NE(g.row(s), nullptr) << "no row for " << s;
-  ASSERT_TRUE(rubric().ok()) << rubric().error;
-
-  // The solution: every point and the extra credit; the starter: nothing.
-  const auto regular = rubricPoints(false), extra = rubricPoints(true);
-  double full = 0, fullExtra = 0;
-  for (const auto& [task, p] : regular) full += p;
-  for (const auto& [task, p] : extra) fullExtra += p;
+// The solution: every point and the extra credit, and no mistake; the wrong version: its own
+// mistake, in its row and in the summary's counts; the starter: nothing.
+void expectSolutionAndStarterRows(const Gradebook& g, const Class& c, const std::string& output) {
   const auto* solution = g.row("solution");
   ASSERT_NE(solution, nullptr);
   EXPECT_EQ(solution->at("status"), "graded") << describe(*solution);
-  EXPECT_DOUBLE_EQ(pointsOf(*solution, "total"), full + fullExtra) << describe(*solution);
-  EXPECT_DOUBLE_EQ(pointsOf(*solution, "max"), full);
-  EXPECT_DOUBLE_EQ(pointsOf(*solution, "extra_credit"), fullExtra);
-  EXPECT_GT(fullExtra, 0);
-  // The known mistakes named: each wrong version's own, in its row and in the summary's counts.
+  EXPECT_DOUBLE_EQ(pointsOf(*solution, "total"), c.full + c.fullExtra) << describe(*solution);
+  EXPECT_DOUBLE_EQ(pointsOf(*solution, "max"), c.full);
+  EXPECT_DOUBLE_EQ(pointsOf(*solution, "extra_credit"), c.fullExtra);
+  EXPECT_GT(c.fullExtra, 0);
   EXPECT_EQ(solution->at("mistakes"), "") << describe(*solution);
-  for (const std::string& name : wrong) {
+  for (const std::string& name : c.wrong) {
     const auto* row = g.row("wrong_" + name);
     const std::string id = staging::expectedMistake(name);
     if (row == nullptr || id.empty()) continue;
     EXPECT_EQ(row->at("mistakes"), id) << describe(*row);
-    EXPECT_NE(r.output.find(id), std::string::npos) << "the summary counts " << id;
+    EXPECT_NE(output.find(id), std::string::npos) << "the summary counts " << id;
   }
   for (int t = 1; t <= 7; ++t) {
     EXPECT_DOUBLE_EQ(pointsOf(*solution, "task" + std::to_string(t)),
-                     regular.count(t) ? regular.at(t) : 0)
+                     c.regular.count(t) ? c.regular.at(t) : 0)
         << t;
   }
   const auto* starter = g.row("starter");
   ASSERT_NE(starter, nullptr);
   EXPECT_EQ(starter->at("status"), "graded");
   EXPECT_DOUBLE_EQ(pointsOf(*starter, "total"), 0) << describe(*starter);
+}
 
-  // The class's picture: every submission, every rubric item, the wrong version's mistake, the
-  // similarity compared (the wrong version is the solution with one file changed).
-  const std::string page = readAll(dir / "out" / "insights.html");
+// The class's picture: every submission, every rubric item, the wrong version's mistake, the
+// similarity compared (the wrong version is the solution with one file changed).
+void expectInsightsPage(const fs::path& out, const Class& c) {
+  const std::string page = readAll(out / "insights.html");
   ASSERT_FALSE(page.empty()) << "no insights.html";
-  for (const std::string& st : students) {
+  for (const std::string& st : c.students) {
     EXPECT_NE(page.find("<td>" + st + "</td>"), std::string::npos) << "insights.html lacks " << st;
   }
   for (const auto& item : rubric().items) {
     EXPECT_NE(page.find(item.name), std::string::npos) << "insights.html lacks " << item.name;
   }
-  for (const std::string& name : wrong) {
+  for (const std::string& name : c.wrong) {
     EXPECT_NE(page.find("<code>" + staging::expectedMistake(name) + "</code>"), std::string::npos);
   }
   EXPECT_NE(page.find("sim_c++ (Debian"), std::string::npos) << "--similarity ran no tool";
   EXPECT_EQ(page.find(", 0 files compared"), std::string::npos) << "--similarity compared nothing";
-  EXPECT_FALSE(fs::exists(dir / "out" / ".similarity")) << "the comparison's work is left";
+  EXPECT_FALSE(fs::exists(out / ".similarity")) << "the comparison's work is left";
+}
 
-  // Each wrong version loses points in exactly the tasks its EXPECT names. The extra credit
-  // (one column for tasks 4 and 7) belongs to its task: it may be what a wrong version loses
-  // there. The gradebook has a column for each task's regular points (task 7's are none with
-  // the default rubric: it is extra credit).
-  for (const std::string& name : wrong) {
+// Each wrong version loses points in exactly the tasks its EXPECT names. The extra credit (one
+// column for tasks 4 and 7) belongs to its task: it may be what a wrong version loses there. The
+// gradebook has a column for each task's regular points (task 7's are none with the default
+// rubric: it is extra credit).
+void expectWrongVersionRows(const Gradebook& g, const Class& c) {
+  for (const std::string& name : c.wrong) {
     const auto* row = g.row("wrong_" + name);
     ASSERT_NE(row, nullptr) << name;
     EXPECT_EQ(row->at("status"), "graded") << describe(*row);
     const std::set<int> failing = staging::failingTasks(name);
-    const bool extraShort = pointsOf(*row, "extra_credit") < fullExtra;
+    const bool extraShort = pointsOf(*row, "extra_credit") < c.fullExtra;
     bool extraLost = false;
     for (int t = 1; t <= 7; ++t) {
       const double got = pointsOf(*row, "task" + std::to_string(t));
-      const double taskRegular = regular.count(t) ? regular.at(t) : 0;
-      const double taskExtra = extra.count(t) ? extra.at(t) : 0;
+      const double taskRegular = c.regular.count(t) ? c.regular.at(t) : 0;
+      const double taskExtra = c.extra.count(t) ? c.extra.at(t) : 0;
       if (failing.count(t)) {
         EXPECT_TRUE(got < taskRegular || (taskExtra > 0 && extraShort))
             << name << " must lose points in task " << t << ": " << describe(*row);
@@ -719,26 +717,30 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
       }
     }
     if (!extraLost) {
-      EXPECT_DOUBLE_EQ(pointsOf(*row, "extra_credit"), fullExtra) << name << ": " << describe(*row);
+      EXPECT_DOUBLE_EQ(pointsOf(*row, "extra_credit"), c.fullExtra)
+          << name << ": " << describe(*row);
     }
   }
+}
 
-  // Every hostile or broken one has a grade, never more than the solution's; those with a
-  // task file missing or broken say "build failed"; those with no task file, "not graded".
+// Every hostile or broken one has a grade, never more than the solution's; those with a task
+// file missing or broken say "build failed"; those with no task file, "not graded".
+void expectHostileRows(const Gradebook& g, const Class& c, const fs::path& out,
+                       const std::string& output) {
   const std::set<std::string> buildFails = {"hostile_compile_error", "hostile_missing_file",
                                             "hostile_static_infinite_loop"};
   const std::set<std::string> notGraded = {"empty"};
   // A damaged archive: libarchive 3.6 (Debian 12) reads the entries before the damage (build
   // failed), 3.7 (Debian 13) none of it (not graded). Either way no grade above 0.
   const std::set<std::string> damaged = {"corrupt"};
-  for (const std::string& s : students) {
+  for (const std::string& s : c.students) {
     if (s.rfind("hostile_", 0) != 0 && s != "corrupt" && s != "empty") continue;
     const auto* row = g.row(s);
     ASSERT_NE(row, nullptr) << s;
     EXPECT_TRUE(row->at("status") == "graded" || row->at("status") == "build failed" ||
                 row->at("status") == "not graded")
         << describe(*row);
-    EXPECT_LE(pointsOf(*row, "total"), full + fullExtra) << describe(*row);
+    EXPECT_LE(pointsOf(*row, "total"), c.full + c.fullExtra) << describe(*row);
     if (buildFails.count(s)) {
       EXPECT_EQ(row->at("status"), "build failed") << describe(*row);
     }
@@ -751,35 +753,78 @@ TEST(Batch, GradesOneOfEveryKindOfSubmission) {
           << describe(*row);
     }
     if (buildFails.count(s) || notGraded.count(s) || damaged.count(s) || s == "hostile_segfault") {
-      EXPECT_NE(r.output.find("\n    " + s + ": "), std::string::npos) << s << "\n" << r.output;
+      EXPECT_NE(output.find("\n    " + s + ": "), std::string::npos) << s << "\n" << output;
     }
-    EXPECT_TRUE(fs::exists(dir / "out" / s / "results.json")) << s;
-    EXPECT_TRUE(fs::exists(dir / "out" / s / "report.html")) << s;
-    EXPECT_TRUE(fs::exists(dir / "out" / s / "grade.log")) << s;
-    EXPECT_FALSE(fs::exists(dir / "out" / s / "work")) << "the work folder is removed";
+    EXPECT_TRUE(fs::exists(out / s / "results.json")) << s;
+    EXPECT_TRUE(fs::exists(out / s / "report.html")) << s;
+    EXPECT_TRUE(fs::exists(out / s / "grade.log")) << s;
+    EXPECT_FALSE(fs::exists(out / s / "work")) << "the work folder is removed";
   }
   EXPECT_DOUBLE_EQ(pointsOf(*g.row("corrupt"), "total"), 0);
   EXPECT_DOUBLE_EQ(pointsOf(*g.row("empty"), "total"), 0);
-  EXPECT_NE(r.output.find("hostile_segfault: graded, but the code crashed"), std::string::npos)
+  EXPECT_NE(output.find("hostile_segfault: graded, but the code crashed"), std::string::npos)
+      << output;
+}
+
+// A class of every kind in one batch with -j 2, checked row by row: the solution, the starter,
+// one wrong version of each task, hostile submissions that break the build or hang the probe
+// before main (and those a batch must keep apart: one that writes files, one that floods its
+// output), the archive cases, a damaged archive, an empty folder, a stray file. Every wrong
+// version and every hostile submission is graded on its own by the grader_scores_* and
+// grader_hostile_* tests; here the batch must keep each one's row right beside the others.
+TEST(Batch, GradesOneOfEveryKindOfSubmission) {
+  const fs::path dir = caseDir("everything");
+  const fs::path in = dir / "submissions";
+  Class c;
+  stageKnownScores(in, c);
+  if (HasFatalFailure()) return;
+  stageHostileOnes(in, c);
+  if (HasFatalFailure()) return;
+  ASSERT_GE(c.students.size(), 16u);
+
+  // Short time limits for the cases that never return (the correct checks take hundredths of
+  // a second): the endless loop costs task 1's checks 2 s each.
+  const fs::path rubricFile = staging::withTimeLimit(A6_DEFAULT_RUBRIC, dir, 2);
+  const Ran r =
+      batchRun(in, dir / "out",
+               "-j 2 --timeout 600 --time-budget 120 --similarity --rubric " + quoted(rubricFile));
+  std::printf("%s", r.output.substr(r.output.find("a6_batch: ")).c_str());
+  EXPECT_EQ(r.status, 0) << "every submission has a grade\n" << r.output;
+  EXPECT_NE(r.output.find("README.txt"), std::string::npos) << "the stray file is noted";
+  EXPECT_EQ(counted(r.output, "graded") + counted(r.output, "build failed") +
+                counted(r.output, "not graded"),
+            static_cast<int>(c.students.size()))
       << r.output;
+
+  // A row for everyone, then each kind's.
+  const Gradebook g = readGradebook(dir / "out" / "gradebook.csv");
+  ASSERT_EQ(g.error, "");
+  EXPECT_EQ(g.header, kHeader);
+  EXPECT_EQ(g.rows.size(), c.students.size());
+  for (const std::string& s : c.students) EXPECT_NE(g.row(s), nullptr) << "no row for " << s;
+  ASSERT_TRUE(rubric().ok()) << rubric().error;
+  c.regular = rubricPoints(false);
+  c.extra = rubricPoints(true);
+  for (const auto& [task, p] : c.regular) c.full += p;
+  for (const auto& [task, p] : c.extra) c.fullExtra += p;
+  expectSolutionAndStarterRows(g, c, r.output);
+  if (HasFatalFailure()) return;
+  expectInsightsPage(dir / "out", c);
+  if (HasFatalFailure()) return;
+  expectWrongVersionRows(g, c);
+  if (HasFatalFailure()) return;
+  expectHostileRows(g, c, dir / "out", r.output);
+  if (HasFatalFailure()) return;
   expectNoProcessMentioning(dir.string());
 }
 
-// Killed half-way (kill -9: no chance to clean up), then run again: what was graded is skipped,
-// the rest is graded, and the gradebook ends complete. A changed submission is graded again;
-// --force grades everything again.
-TEST(Batch, AnInterruptedBatchResumesWithWhatIsLeft) {
-  namespace staging = a6::test::staging;
-  const fs::path dir = caseDir("resume");
-  const fs::path in = dir / "submissions", out = dir / "out";
-  fs::create_directories(in);
-  fs::copy(kSource / "solution", in / "solution", fs::copy_options::recursive);
-  fs::copy(kSource / "starter", in / "starter", fs::copy_options::recursive);
-  // Two more that lose some points: the solution with the starter's file of task 2, of task 5.
-  staging::stage(in / "no_task2", "", {2});
-  staging::stage(in / "no_task5", "", {5});
-  const int total = 4;
+// ---- an interrupted batch ----------------------------------------------------------------------
 
+// Starts a batch of `total` submissions and kills it (kill -9) once two are graded: its
+// children die with it, and what it left is a valid gradebook of what it finished. Gives the
+// markers of the graded ones.
+void startAndKill(const fs::path& dir, const fs::path& in, const fs::path& out, int total,
+                  std::map<std::string, std::string>& graded) {
   const pid_t pid = startBatch(in, out, dir / "first.log", {"-j", "2"});
   ASSERT_GT(pid, 0);
   const bool some = waitForMarkers(out, 2, 120);
@@ -792,24 +837,27 @@ TEST(Batch, AnInterruptedBatchResumesWithWhatIsLeft) {
   expectNoProcessMentioning(out.string());
   const int done = markers(out);
   ASSERT_LT(done, total) << "the batch finished before it was killed: nothing to resume";
-  std::map<std::string, std::string> before;  // the graded ones' markers
   for (const auto& e : fs::directory_iterator(out)) {
     if (fs::exists(e.path() / "batch.json")) {
-      before[e.path().filename().string()] = readAll(e.path() / "batch.json");
+      graded[e.path().filename().string()] = readAll(e.path() / "batch.json");
     }
   }
-  // What the killed batch left is a valid gradebook of what it finished.
   const Gradebook partial = readGradebook(out / "gradebook.csv");
   EXPECT_EQ(partial.error, "");
   EXPECT_EQ(partial.header, kHeader);
   EXPECT_GE(static_cast<int>(partial.rows.size()), done - 1);
+}
 
+// Run again: what was graded (its marker unchanged) is skipped, the rest graded, and the
+// gradebook complete.
+void expectItResumes(const fs::path& in, const fs::path& out, int total,
+                     const std::map<std::string, std::string>& graded) {
   const Ran second = batchRun(in, out, "-j 2");
   EXPECT_EQ(second.status, 0) << second.output;
-  EXPECT_EQ(counted(second.output, "skipped"), done) << second.output;
+  EXPECT_EQ(counted(second.output, "skipped"), static_cast<int>(graded.size())) << second.output;
   // The counts are over every submission, whichever run graded it.
   EXPECT_EQ(counted(second.output, "graded"), total) << second.output;
-  for (const auto& [student, marker] : before) {
+  for (const auto& [student, marker] : graded) {
     EXPECT_EQ(readAll(out / student / "batch.json"), marker) << student << " was graded again";
   }
   const Gradebook complete = readGradebook(out / "gradebook.csv");
@@ -820,23 +868,46 @@ TEST(Batch, AnInterruptedBatchResumesWithWhatIsLeft) {
   EXPECT_EQ(solution.at("status"), "graded");
   EXPECT_DOUBLE_EQ(pointsOf(solution, "total"),
                    pointsOf(solution, "max") + pointsOf(solution, "extra_credit"));
+}
 
-  // Nothing changed: nothing graded.
+// Nothing changed: nothing graded; one submission changed: it alone is graded again; --force:
+// everything.
+void expectOnlyChangesAreGradedAgain(const fs::path& in, const fs::path& out, int total) {
   Ran third = batchRun(in, out, "-j 2");
   EXPECT_EQ(counted(third.output, "skipped"), total) << third.output;
-  // One submission changed: it alone is graded again.
   writeAll(in / "starter" / "spring.cpp", readAll(kSource / "solution" / "spring.cpp"));
   third = batchRun(in, out, "-j 2");
   EXPECT_EQ(counted(third.output, "graded"), total) << third.output;
   EXPECT_EQ(counted(third.output, "skipped"), total - 1) << third.output;
   EXPECT_GT(pointsOf(*readGradebook(out / "gradebook.csv").row("starter"), "task1"), 0)
       << "the changed spring.cpp was graded";
-  // --force: everything.
   const Ran forced = batchRun(in, out, "-j 2 --force");
   EXPECT_EQ(forced.status, 0) << forced.output;
   EXPECT_EQ(counted(forced.output, "graded"), total) << forced.output;
   EXPECT_EQ(counted(forced.output, "skipped"), 0) << forced.output;
   EXPECT_EQ(readGradebook(out / "gradebook.csv").rows.size(), static_cast<std::size_t>(total));
+}
+
+// Killed half-way (kill -9: no chance to clean up), then run again: what was graded is skipped,
+// the rest is graded, and the gradebook ends complete. A changed submission is graded again;
+// --force grades everything again.
+TEST(Batch, AnInterruptedBatchResumesWithWhatIsLeft) {
+  const fs::path dir = caseDir("resume");
+  const fs::path in = dir / "submissions", out = dir / "out";
+  fs::create_directories(in);
+  fs::copy(kSource / "solution", in / "solution", fs::copy_options::recursive);
+  fs::copy(kSource / "starter", in / "starter", fs::copy_options::recursive);
+  // Two more that lose some points: the solution with the starter's file of task 2, of task 5.
+  staging::stage(in / "no_task2", "", {2});
+  staging::stage(in / "no_task5", "", {5});
+  const int total = 4;
+
+  std::map<std::string, std::string> graded;  // the graded ones' markers
+  startAndKill(dir, in, out, total, graded);
+  if (HasFatalFailure()) return;
+  expectItResumes(in, out, total, graded);
+  if (HasFatalFailure()) return;
+  expectOnlyChangesAreGradedAgain(in, out, total);
 }
 
 // SIGTERM (or Ctrl-C): the running gradings are stopped, the gradebook holds what finished, and
@@ -924,15 +995,13 @@ touch 'MARK'; exec sleep 419
   expectNoProcessMentioning("sleep 419");
 }
 
-// A grading that hangs is killed at --timeout (with what it started), one that crashes or fails
-// is recorded, and the batch goes on: a fake grader plays each part.
-TEST(Batch, HangingCrashingAndFailingGradingsAreRecordedAndTheBatchGoesOn) {
-  const fs::path dir = caseDir("statuses");
-  const fs::path in = dir / "submissions", out = dir / "out";
-  for (const char* name :
-       {"fine", "hangs", "hangs_too", "crashes", "fails", "garbage", "refused"}) {
-    writeAll(in / name / "spring.cpp", "// " + std::string(name));
-  }
+// ---- gradings that hang, crash or fail
+// -----------------------------------------------------------
+
+// A fake a6_grade that plays each part by the submission's name: hangs (with a child of its
+// own), crashes, fails, writes garbage, refuses; any other gets `results`, whose rows test the
+// task columns (task 7 counted as regular points by an instructor's rubric).
+fs::path writeMisbehavingGrader(const fs::path& dir) {
   writeAll(dir / "results.json", R"({"score": 49, "tests": [
     {"name": "Task 1", "score": 12, "max_score": 15, "tags": ["task1"]},
     {"name": "Task 4 extra", "score": 3, "max_score": 0, "tags": ["task4", "extra_credit"]},
@@ -957,12 +1026,12 @@ esac
   writeAll(grader,
            a6::test::staging::replaceAll(script, "RESULTS", (dir / "results.json").string()));
   fs::permissions(grader, fs::perms::owner_all);
-  const Ran r = batchRun(in, out, "-j 3 --timeout 3 --grader " + quoted(grader));
-  EXPECT_EQ(r.status, 1) << "some submissions have no grade\n" << r.output;
-  EXPECT_LT(r.seconds, 60) << r.output;
-  const Gradebook g = readGradebook(out / "gradebook.csv");
-  ASSERT_EQ(g.error, "");
-  ASSERT_EQ(g.rows.size(), 7u) << r.output;
+  return grader;
+}
+
+// Each one's status, no points without a grade, the graded one's points by column, and the
+// hung one killed at the time limit.
+void expectEachStatus(const Gradebook& g, const Ran& r) {
   const std::map<std::string, std::string> expected = {
       {"fine", "graded"},         {"hangs", "timed out"},    {"hangs_too", "timed out"},
       {"crashes", "crashed"},     {"fails", "grader error"}, {"garbage", "grader error"},
@@ -986,6 +1055,26 @@ esac
   EXPECT_GE(hung, 2.9);
   EXPECT_LT(hung, 10) << "killed at the time limit";
   EXPECT_NE(r.output.find("the kit is missing"), std::string::npos) << r.output;
+}
+
+// A grading that hangs is killed at --timeout (with what it started), one that crashes or fails
+// is recorded, and the batch goes on: a fake grader plays each part.
+TEST(Batch, HangingCrashingAndFailingGradingsAreRecordedAndTheBatchGoesOn) {
+  const fs::path dir = caseDir("statuses");
+  const fs::path in = dir / "submissions", out = dir / "out";
+  for (const char* name :
+       {"fine", "hangs", "hangs_too", "crashes", "fails", "garbage", "refused"}) {
+    writeAll(in / name / "spring.cpp", "// " + std::string(name));
+  }
+  const fs::path grader = writeMisbehavingGrader(dir);
+  const Ran r = batchRun(in, out, "-j 3 --timeout 3 --grader " + quoted(grader));
+  EXPECT_EQ(r.status, 1) << "some submissions have no grade\n" << r.output;
+  EXPECT_LT(r.seconds, 60) << r.output;
+  const Gradebook g = readGradebook(out / "gradebook.csv");
+  ASSERT_EQ(g.error, "");
+  ASSERT_EQ(g.rows.size(), 7u) << r.output;
+  expectEachStatus(g, r);
+  if (HasFatalFailure()) return;
   expectNoProcessMentioning("sleep 417");  // the whole process group was killed
 
   // Only what has a grade is skipped by a re-run: the others are tried again.

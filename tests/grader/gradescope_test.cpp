@@ -309,8 +309,8 @@ class Environment final : public ::testing::Environment {
 
 // --- the cases, in order --------------------------------------------------------------------
 
-TEST(Gradescope, TheZipHasItsTwoFilesAtTheRootAndNothingOfTheSolution) {
-  Package& p = package();
+// The zip, made by scripts/gradescope-package.sh in a fresh folder others may enter.
+void makeTheZip(Package& p) {
   for (const char* tool : {"zip", "unzip"}) {
     ASSERT_EQ(run(std::string("command -v ") + tool).status, 0)
         << "the '" << tool << "' command is missing: run scripts/install-deps.sh (as root)";
@@ -328,8 +328,11 @@ TEST(Gradescope, TheZipHasItsTwoFilesAtTheRootAndNothingOfTheSolution) {
   ASSERT_EQ(packaged.status, 0) << packaged.output;
   report("scripts/gradescope-package.sh", packaged.seconds);
   std::printf("[gradescope] zip: %ju bytes\n", static_cast<std::uintmax_t>(fs::file_size(p.zip)));
+}
 
-  // The entries, by path.
+// The entries, by path: the two files at the root, no solution, no build tree, and the
+// autograder's secrets, which travel with it.
+void expectTheEntries(const Package& p) {
   const Outcome listed = run("unzip -Z1 " + quote(p.zip));
   ASSERT_EQ(listed.status, 0) << listed.output;
   std::set<std::string> entries;
@@ -348,7 +351,6 @@ TEST(Gradescope, TheZipHasItsTwoFilesAtTheRootAndNothingOfTheSolution) {
                  contains(e, "CMakeCache.txt"))
         << e << ": a build folder";
   }
-  // The autograder's secrets travel with it.
   std::vector<std::string> needed = {"tests/golden/manifest.json", "grader/rubric.toml",
                                      "starter/spring.cpp", "scripts/install-deps.sh"};
   for (const char* secret_dir : {"tests/hidden", "tests/golden/hidden"}) {
@@ -362,8 +364,10 @@ TEST(Gradescope, TheZipHasItsTwoFilesAtTheRootAndNothingOfTheSolution) {
     needed.push_back("tests/support/reference_models.inc");
   }
   for (const std::string& n : needed) EXPECT_EQ(entries.count(n), 1u) << n << " missing";
+}
 
-  // Unpacked as Gradescope does: into /autograder/source.
+// Unpacked as Gradescope does: into /autograder/source.
+void unpackAsGradescopeDoes(const Package& p) {
   fs::create_directories(p.root / "source");
   fs::create_directories(p.root / "results");
   fs::create_directories(p.root / "submission");
@@ -373,12 +377,14 @@ TEST(Gradescope, TheZipHasItsTwoFilesAtTheRootAndNothingOfTheSolution) {
     const fs::perms perms = fs::status(p.root / "source" / f).permissions();
     EXPECT_NE(perms & fs::perms::owner_exec, fs::perms::none) << f << " must be executable";
   }
+}
 
-  // By content: no line of the solution that the starter lacks, in any file. The autograder's
-  // own hidden material (the hidden checks, the reference force models) computes the right
-  // answers to check against, so it may share a line or two with the solution (a cloth's grid
-  // spacing, say): those are printed, and only more than kSharedLinesAllowed in one such file (a
-  // copied function) fails.
+// By content: no line of the solution that the starter lacks, in any file. The autograder's
+// own hidden material (the hidden checks, the reference force models) computes the right
+// answers to check against, so it may share a line or two with the solution (a cloth's grid
+// spacing, say): those are printed, and only more than kSharedLinesAllowed in one such file (a
+// copied function) fails.
+void expectNoLineOfTheSolution(const Package& p) {
   constexpr std::size_t kSharedLinesAllowed = 2;
   const std::set<std::string> secret = solutionOnlyLines();
   ASSERT_GE(secret.size(), 20u) << "too few solution-only lines for the check to mean anything";
@@ -406,6 +412,18 @@ TEST(Gradescope, TheZipHasItsTwoFilesAtTheRootAndNothingOfTheSolution) {
   }
   std::printf("[gradescope] %d files scanned for %zu solution-only lines\n", scanned,
               secret.size());
+}
+
+TEST(Gradescope, TheZipHasItsTwoFilesAtTheRootAndNothingOfTheSolution) {
+  Package& p = package();
+  makeTheZip(p);
+  if (HasFatalFailure()) return;
+  expectTheEntries(p);
+  if (HasFatalFailure()) return;
+  unpackAsGradescopeDoes(p);
+  if (HasFatalFailure()) return;
+  expectNoLineOfTheSolution(p);
+  if (HasFatalFailure()) return;
   p.unpacked = true;
 }
 

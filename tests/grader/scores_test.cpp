@@ -384,30 +384,26 @@ void expectImagesSee(const Graded& g, const std::string& name, const std::set<in
   }
 }
 
-class WrongVersion : public ::testing::TestWithParam<std::string> {};
+// The points per task a wrong version got, and the most it could.
+struct TaskPoints {
+  std::map<int, double> got, full;
+};
 
-TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
-  const std::string name = GetParam();
-  const std::set<int> failing = failingTasks(name);
-  ASSERT_FALSE(failing.empty()) << "tests/wrong/" << name << "/EXPECT names no task";
-  const fs::path dir = outDir("wrong_" + name);
-  const Graded g = gradeLinked(dir / "out");
-  expectCompleted(g);
-  if (HasFatalFailure()) return;
-  expectNoGradingPaths(g, dir);
-  expectMargins(g, name, failing);
-  expectImagesSee(g, name, failing);
-  const auto got = perTask(g.results, false), full = perTask(g.results, true);
+// "score 85; per task 1:15/15 ...", with the tasks it is wrong in (`named`).
+void printScores(const Graded& g, const std::string& name, const std::string& named,
+                 const TaskPoints& points) {
   std::ostringstream table;
-  for (const auto& [task, points] : full) {
-    table << " " << task << ":" << got.at(task) << "/" << points;
+  for (const auto& [task, most] : points.full) {
+    table << " " << task << ":" << points.got.at(task) << "/" << most;
   }
-  std::string named;
-  for (const int t : failing) named += (named.empty() ? "" : " ") + std::to_string(t);
   std::printf("[ scores   ] %s (fail: %s): score %s; per task%s\n", name.c_str(), named.c_str(),
               g.results["score"].dump().c_str(), table.str().c_str());
-  expectMistakeNamed(g, name, failing);
-  const std::string html = expectReplays(dir / "out", false);
+}
+
+// The report's replays of a wrong version.
+void expectWrongReplays(const fs::path& out, const std::string& name,
+                        const std::set<int>& failing) {
+  const std::string html = expectReplays(out, false);
   std::printf("[ replays  ] %s: report.html %zu bytes\n", name.c_str(), html.size());
   // Linked, the files were never looked for: the report says so, not "not found".
   EXPECT_NE(html.find("compiled into the grading program"), std::string::npos);
@@ -422,7 +418,11 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
       name == "t5_removal_off_by_one") {
     EXPECT_NE(html.find("id=\"replay-Task5"), std::string::npos);
   }
-  // Which checks failed outside the wrong tasks, and whether an image may.
+}
+
+// Which checks failed outside the wrong tasks, and whether an image may.
+void expectNoFailureOutsideItsTasks(const Graded& g, const std::string& name,
+                                    const std::set<int>& failing, const std::string& named) {
   for (const auto& [check, outcome] : g.results["extra_data"]["tests"].items()) {
     if (outcome != "failed") continue;
     const int task = taskOfCheck(check);
@@ -442,17 +442,47 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
                   << task << "\n"
                   << g.results.dump(2).substr(0, 8000);
   }
-  for (const auto& [task, points] : full) {
+}
+
+// Points lost in the wrong tasks, every point kept in the others.
+void expectPointsLostOnlyInItsTasks(const Graded& g, const std::string& name,
+                                    const std::set<int>& failing, const std::string& named,
+                                    const TaskPoints& points) {
+  for (const auto& [task, most] : points.full) {
     if (task == 0) continue;
     if (failing.count(task)) {
-      EXPECT_LT(got.at(task), points) << name << " must lose points in task " << task << "\n"
-                                      << summary(g);
+      EXPECT_LT(points.got.at(task), most) << name << " must lose points in task " << task << "\n"
+                                           << summary(g);
     } else {
-      EXPECT_DOUBLE_EQ(got.at(task), points) << name << " must keep every point of task " << task
-                                             << " (it is wrong in task(s) " << named << " only)\n"
-                                             << g.results.dump(2).substr(0, 8000);
+      EXPECT_DOUBLE_EQ(points.got.at(task), most)
+          << name << " must keep every point of task " << task << " (it is wrong in task(s) "
+          << named << " only)\n"
+          << g.results.dump(2).substr(0, 8000);
     }
   }
+}
+
+class WrongVersion : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
+  const std::string name = GetParam();
+  const std::set<int> failing = failingTasks(name);
+  ASSERT_FALSE(failing.empty()) << "tests/wrong/" << name << "/EXPECT names no task";
+  const fs::path dir = outDir("wrong_" + name);
+  const Graded g = gradeLinked(dir / "out");
+  expectCompleted(g);
+  if (HasFatalFailure()) return;
+  expectNoGradingPaths(g, dir);
+  expectMargins(g, name, failing);
+  expectImagesSee(g, name, failing);
+  const TaskPoints points{perTask(g.results, false), perTask(g.results, true)};
+  std::string named;
+  for (const int t : failing) named += (named.empty() ? "" : " ") + std::to_string(t);
+  printScores(g, name, named, points);
+  expectMistakeNamed(g, name, failing);
+  expectWrongReplays(dir / "out", name, failing);
+  expectNoFailureOutsideItsTasks(g, name, failing, named);
+  expectPointsLostOnlyInItsTasks(g, name, failing, named, points);
 }
 
 INSTANTIATE_TEST_SUITE_P(Wrong, WrongVersion, ::testing::ValuesIn(wrongVersions()),

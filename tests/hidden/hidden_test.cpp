@@ -185,162 +185,213 @@ void referenceStep(std::vector<Particle>& ps, const std::vector<harness::SpringD
   }
 }
 
+// A random chain of 2 to 6 particles (the first one pinned or not), run 30 frames in 1 to 4
+// substeps under random gravity and drag, its state recorded every 10 frames.
+struct RandomChain {
+  harness::SimulateRequest request;
+  int n = 0;           ///< particles
+  double spacing = 0;  ///< between neighbours, m
+};
+
+RandomChain randomChain(Draw& draw) {
+  RandomChain chain;
+  harness::SimulateRequest& r = chain.request;
+  const int n = chain.n = draw.integer(2, 6);
+  const double spacing = chain.spacing = draw.uniform(0.2, 0.6);
+  const Vec2 dir = draw.unit();
+  for (int i = 0; i < n; ++i) {
+    Particle p;
+    p.x = i * spacing * dir + draw.vec(0.05);
+    p.v = draw.vec(0.5);
+    p.m = draw.uniform(0.2, 1);
+    p.pinned = i == 0 && draw.coin();
+    r.particles.push_back(p);
+  }
+  for (int i = 0; i + 1 < n; ++i) {
+    harness::SpringData s;
+    s.i = i;
+    s.j = i + 1;
+    s.restLength = spacing;
+    s.ks = draw.uniform(10, 150);
+    s.kd = draw.uniform(0, 0.5);
+    r.springs.push_back(s);
+  }
+  r.env.gravity = Vec2(0, -draw.uniform(0, 9.81));
+  r.env.drag = draw.uniform(0, 0.3);
+  r.env.buoyancy = 0;
+  r.env.repulsion = 0;
+  r.frameDt = 1.0 / 60;
+  r.substeps = draw.integer(1, 4);
+  r.stepOnly = false;
+  r.frames = 30;
+  r.recordEvery = 10;
+  r.referenceForces = true;
+  return chain;
+}
+
+// The student's recorded states against the reference steps, frame by frame.
+void expectTheReferenceChain(const RandomChain& chain, const harness::SimulateResult& result,
+                             const Draw& draw) {
+  const harness::SimulateRequest& r = chain.request;
+  const int n = chain.n;
+  // Positions relative to the chain's extent, velocities to its speed after falling for the run.
+  const double extent = n * chain.spacing + 0.1;
+  const double speed = 0.5 + 9.81 * r.frames * r.frameDt;
+  std::vector<Particle> expected = r.particles;
+  std::size_t recorded = 0;
+  for (int frame = 1; frame <= r.frames; ++frame) {
+    for (int s = 0; s < r.substeps; ++s)
+      referenceStep(expected, r.springs, r.env, r.frameDt / r.substeps);
+    if (frame % r.recordEvery != 0) continue;
+    const std::vector<Particle>& actual = result.states[recorded++];
+    ASSERT_EQ(actual.size(), expected.size()) << currentTask() << ": particles added or removed";
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      ASSERT_VEC_NEAR(actual[i].x, expected[i].x, relativeTo(extent, kManySteps))
+          << "particle " << i << " of a chain of " << n << " after frame " << frame << " ("
+          << r.substeps << " substep(s) of " << r.frameDt << " s / " << r.substeps
+          << ", first particle " << (r.particles[0].pinned ? "pinned" : "free") << ")"
+          << draw.seed()
+          << hint(
+                 "per substep: reset forces, add external and spring forces (p2 gets f, p1 "
+                 "gets -f), then v += h f / m before x += h v, skipping pinned particles; "
+                 "advance(dt, n) takes n steps of dt / n");
+      ASSERT_VEC_NEAR(actual[i].v, expected[i].v, relativeTo(speed, kManySteps))
+          << "velocity of particle " << i << " after frame " << frame << draw.seed()
+          << hint("v += h f / m, with f the sum of this substep's forces");
+    }
+  }
+}
+
 TEST(Task3Hidden, RandomChainsFollowSymplecticEulerWithSubsteps) {
   Draw draw;
   for (int k = 0; k < 12; ++k) {
-    harness::SimulateRequest r;
-    const int n = draw.integer(2, 6);
-    const double spacing = draw.uniform(0.2, 0.6);
-    const Vec2 dir = draw.unit();
-    for (int i = 0; i < n; ++i) {
-      Particle p;
-      p.x = i * spacing * dir + draw.vec(0.05);
-      p.v = draw.vec(0.5);
-      p.m = draw.uniform(0.2, 1);
-      p.pinned = i == 0 && draw.coin();
-      r.particles.push_back(p);
-    }
-    for (int i = 0; i + 1 < n; ++i) {
-      harness::SpringData s;
-      s.i = i;
-      s.j = i + 1;
-      s.restLength = spacing;
-      s.ks = draw.uniform(10, 150);
-      s.kd = draw.uniform(0, 0.5);
-      r.springs.push_back(s);
-    }
-    r.env.gravity = Vec2(0, -draw.uniform(0, 9.81));
-    r.env.drag = draw.uniform(0, 0.3);
-    r.env.buoyancy = 0;
-    r.env.repulsion = 0;
-    r.frameDt = 1.0 / 60;
-    r.substeps = draw.integer(1, 4);
-    r.stepOnly = false;
-    r.frames = 30;
-    r.recordEvery = 10;
-    r.referenceForces = true;
-
-    const harness::SimulateResult result = student().ask(r);
+    const RandomChain chain = randomChain(draw);
+    const harness::SimulateResult result = student().ask(chain.request);
     A6_ASSERT_RAN(result);
     ASSERT_EQ(result.states.size(), 3u) << currentTask() << ": expected 3 recorded states";
-    // Positions relative to the chain's extent, velocities to its speed after falling for the run.
-    const double extent = n * spacing + 0.1;
-    const double speed = 0.5 + 9.81 * r.frames * r.frameDt;
-    std::vector<Particle> expected = r.particles;
-    std::size_t recorded = 0;
-    for (int frame = 1; frame <= r.frames; ++frame) {
-      for (int s = 0; s < r.substeps; ++s)
-        referenceStep(expected, r.springs, r.env, r.frameDt / r.substeps);
-      if (frame % r.recordEvery != 0) continue;
-      const std::vector<Particle>& actual = result.states[recorded++];
-      ASSERT_EQ(actual.size(), expected.size()) << currentTask() << ": particles added or removed";
-      for (std::size_t i = 0; i < expected.size(); ++i) {
-        ASSERT_VEC_NEAR(actual[i].x, expected[i].x, relativeTo(extent, kManySteps))
-            << "particle " << i << " of a chain of " << n << " after frame " << frame << " ("
-            << r.substeps << " substep(s) of " << r.frameDt << " s / " << r.substeps
-            << ", first particle " << (r.particles[0].pinned ? "pinned" : "free") << ")"
-            << draw.seed()
-            << hint(
-                   "per substep: reset forces, add external and spring forces (p2 gets f, p1 "
-                   "gets -f), then v += h f / m before x += h v, skipping pinned particles; "
-                   "advance(dt, n) takes n steps of dt / n");
-        ASSERT_VEC_NEAR(actual[i].v, expected[i].v, relativeTo(speed, kManySteps))
-            << "velocity of particle " << i << " after frame " << frame << draw.seed()
-            << hint("v += h f / m, with f the sum of this substep's forces");
-      }
-    }
+    expectTheReferenceChain(chain, result, draw);
+    if (HasFatalFailure()) return;
   }
 }
 
 // Task 4 -------------------------------------------------------------------------------------
 
+// A random cloth of 1 to 12 cells a side, with or without shear springs (the bending extension
+// is extra credit: its checks are Task4Cloth.Bending*), its top corners pinned.
+ClothSpec randomClothSpec(Draw& draw) {
+  ClothSpec spec;
+  spec.n = draw.integer(1, 12);
+  spec.size = draw.uniform(0.3, 3);
+  spec.origin = draw.vec(2);
+  spec.particleMass = draw.uniform(0.001, 0.1);
+  spec.ksStructural = draw.uniform(50, 500), spec.kdStructural = draw.uniform(0, 1);
+  spec.shear = draw.coin();
+  spec.ksShear = draw.uniform(10, 100), spec.kdShear = draw.uniform(0, 0.5);
+  spec.bending = false;
+  spec.pinTopCorners = true;
+  return spec;
+}
+
+// Every particle at its grid point, the top corners alone pinned, every mass particleMass.
+// `in` describes the input.
+void expectTheClothGrid(const ClothSpec& spec, const harness::ClothResult& result,
+                        const std::string& in) {
+  const int n = spec.n;
+  const double h = spec.size / n;
+  const Tolerance length = relativeTo(spec.size + spec.origin.norm());
+  ASSERT_EQ(result.particles.size(), static_cast<std::size_t>((n + 1) * (n + 1)))
+      << currentTask() << ": " << in << hint("(n + 1)² particles");
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const Particle& p = result.particles[static_cast<std::size_t>(clothIndex(i, j, n))];
+      const Vec2 x = spec.origin + Vec2(i, -j) * h;
+      ASSERT_VEC_NEAR(p.x, x, length)
+          << "particle (" << i << ", " << j << "), " << in
+          << hint("particle (i, j) sits at origin + (i, -j) size / n, index j (n + 1) + i");
+      ASSERT_EQ(p.pinned, (j == 0 && (i == 0 || i == n)))
+          << currentTask() << ": particle (" << i << ", " << j << "), " << in
+          << hint("pin the two top corners only");
+      ASSERT_CLOSE(p.m, spec.particleMass, relativeTo(spec.particleMass))
+          << in << hint("every particle has particleMass");
+    }
+  }
+}
+
+// The springs the cloth must have: unordered index pair -> (type, rest length, ks, kd).
+using ClothSpringKey = std::pair<int, int>;
+using ClothSprings = std::map<ClothSpringKey, std::tuple<SpringType, double, double, double>>;
+
+ClothSprings expectedClothSprings(const ClothSpec& spec) {
+  const int n = spec.n;
+  const double h = spec.size / n;
+  ClothSprings want;
+  auto add = [&](int i1, int j1, int i2, int j2, SpringType type, double l0, double ks, double kd) {
+    const int a = clothIndex(i1, j1, n), b = clothIndex(i2, j2, n);
+    want[{std::min(a, b), std::max(a, b)}] = {type, l0, ks, kd};
+  };
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      if (i < n)
+        add(i, j, i + 1, j, SpringType::Structural, h, spec.ksStructural, spec.kdStructural);
+      if (j < n)
+        add(i, j, i, j + 1, SpringType::Structural, h, spec.ksStructural, spec.kdStructural);
+      if (spec.shear && i < n && j < n) {
+        add(i, j, i + 1, j + 1, SpringType::Shear, std::sqrt(2.0) * h, spec.ksShear, spec.kdShear);
+        add(i + 1, j, i, j + 1, SpringType::Shear, std::sqrt(2.0) * h, spec.ksShear, spec.kdShear);
+      }
+    }
+  }
+  return want;
+}
+
+// Exactly the expected springs, each with its type, rest length and constants.
+void expectTheClothSprings(const ClothSpec& spec, const harness::ClothResult& result,
+                           const std::string& in) {
+  const ClothSprings want = expectedClothSprings(spec);
+  const Tolerance length = relativeTo(spec.size + spec.origin.norm());
+  ASSERT_EQ(result.springs.size(), want.size())
+      << currentTask() << ": the number of springs, " << in
+      << hint(
+             "structural springs to the right and below every particle, and both diagonals "
+             "of every cell when shear is on; no spring twice");
+  for (const harness::SpringData& s : result.springs) {
+    const auto found = want.find({std::min(s.i, s.j), std::max(s.i, s.j)});
+    ASSERT_TRUE(found != want.end())
+        << currentTask() << ": a spring between particles " << s.i << " and " << s.j
+        << " that the cloth does not have, " << in
+        << hint(
+               "structural: (i,j)-(i+1,j), (i,j)-(i,j+1); shear: (i,j)-(i+1,j+1), "
+               "(i+1,j)-(i,j+1)");
+    const auto& [type, l0, ks, kd] = found->second;
+    ASSERT_EQ(s.type, type) << currentTask() << ": spring " << s.i << "-" << s.j << ", " << in
+                            << hint("tag each spring with its SpringType");
+    ASSERT_CLOSE(s.restLength, l0, length)
+        << "spring " << s.i << "-" << s.j << ", " << in << hint("rest length h or sqrt(2) h");
+    ASSERT_CLOSE(s.ks, ks, relativeTo(ks)) << "spring " << s.i << "-" << s.j << ", " << in
+                                           << hint("the constants of the spring's type");
+    ASSERT_CLOSE(s.kd, kd, relativeTo(kd)) << "spring " << s.i << "-" << s.j << ", " << in
+                                           << hint("the constants of the spring's type");
+  }
+}
+
 TEST(Task4Hidden, RandomClothSpecsGiveTheGridAndItsSprings) {
   Draw draw;
   for (int k = 0; k < 10; ++k) {
-    ClothSpec spec;
-    spec.n = draw.integer(1, 12);
-    spec.size = draw.uniform(0.3, 3);
-    spec.origin = draw.vec(2);
-    spec.particleMass = draw.uniform(0.001, 0.1);
-    spec.ksStructural = draw.uniform(50, 500), spec.kdStructural = draw.uniform(0, 1);
-    spec.shear = draw.coin();
-    spec.ksShear = draw.uniform(10, 100), spec.kdShear = draw.uniform(0, 0.5);
-    spec.bending = false;  // the extension is extra credit: its checks are Task4Cloth.Bending*
-    spec.pinTopCorners = true;
+    const ClothSpec spec = randomClothSpec(draw);
     const int n = spec.n;
-    const double h = spec.size / n;
     const std::string in =
         "input: n=" + std::to_string(n) + ", size=" + num(spec.size) + ", origin " +
         str(spec.origin) + ", shear " + (spec.shear ? "on" : "off") +
         ", built into a system that already held " +
         std::to_string(harness::clothPrelude().particles.size()) + " particles" + draw.seed();
-    const Tolerance length = relativeTo(spec.size + spec.origin.norm());
 
     // Read relative to base (a builder that forgot base loses Task4Cloth's check of it only).
     const harness::ClothResult result = clothPart(student().ask(harness::ClothRequest{spec}), n);
     A6_ASSERT_RAN(result);
-    ASSERT_EQ(result.particles.size(), static_cast<std::size_t>((n + 1) * (n + 1)))
-        << currentTask() << ": " << in << hint("(n + 1)² particles");
-    for (int j = 0; j <= n; ++j) {
-      for (int i = 0; i <= n; ++i) {
-        const Particle& p = result.particles[static_cast<std::size_t>(clothIndex(i, j, n))];
-        const Vec2 x = spec.origin + Vec2(i, -j) * h;
-        ASSERT_VEC_NEAR(p.x, x, length)
-            << "particle (" << i << ", " << j << "), " << in
-            << hint("particle (i, j) sits at origin + (i, -j) size / n, index j (n + 1) + i");
-        ASSERT_EQ(p.pinned, (j == 0 && (i == 0 || i == n)))
-            << currentTask() << ": particle (" << i << ", " << j << "), " << in
-            << hint("pin the two top corners only");
-        ASSERT_CLOSE(p.m, spec.particleMass, relativeTo(spec.particleMass))
-            << in << hint("every particle has particleMass");
-      }
-    }
-
-    // The expected springs: unordered index pair -> (type, rest length, ks, kd).
-    using Key = std::pair<int, int>;
-    std::map<Key, std::tuple<SpringType, double, double, double>> want;
-    auto add = [&](int i1, int j1, int i2, int j2, SpringType type, double l0, double ks,
-                   double kd) {
-      const int a = clothIndex(i1, j1, n), b = clothIndex(i2, j2, n);
-      want[{std::min(a, b), std::max(a, b)}] = {type, l0, ks, kd};
-    };
-    for (int j = 0; j <= n; ++j) {
-      for (int i = 0; i <= n; ++i) {
-        if (i < n)
-          add(i, j, i + 1, j, SpringType::Structural, h, spec.ksStructural, spec.kdStructural);
-        if (j < n)
-          add(i, j, i, j + 1, SpringType::Structural, h, spec.ksStructural, spec.kdStructural);
-        if (spec.shear && i < n && j < n) {
-          add(i, j, i + 1, j + 1, SpringType::Shear, std::sqrt(2.0) * h, spec.ksShear,
-              spec.kdShear);
-          add(i + 1, j, i, j + 1, SpringType::Shear, std::sqrt(2.0) * h, spec.ksShear,
-              spec.kdShear);
-        }
-      }
-    }
-    ASSERT_EQ(result.springs.size(), want.size())
-        << currentTask() << ": the number of springs, " << in
-        << hint(
-               "structural springs to the right and below every particle, and both diagonals "
-               "of every cell when shear is on; no spring twice");
-    for (const harness::SpringData& s : result.springs) {
-      const auto found = want.find({std::min(s.i, s.j), std::max(s.i, s.j)});
-      ASSERT_TRUE(found != want.end())
-          << currentTask() << ": a spring between particles " << s.i << " and " << s.j
-          << " that the cloth does not have, " << in
-          << hint(
-                 "structural: (i,j)-(i+1,j), (i,j)-(i,j+1); shear: (i,j)-(i+1,j+1), "
-                 "(i+1,j)-(i,j+1)");
-      const auto& [type, l0, ks, kd] = found->second;
-      ASSERT_EQ(s.type, type) << currentTask() << ": spring " << s.i << "-" << s.j << ", " << in
-                              << hint("tag each spring with its SpringType");
-      ASSERT_CLOSE(s.restLength, l0, length)
-          << "spring " << s.i << "-" << s.j << ", " << in << hint("rest length h or sqrt(2) h");
-      ASSERT_CLOSE(s.ks, ks, relativeTo(ks)) << "spring " << s.i << "-" << s.j << ", " << in
-                                             << hint("the constants of the spring's type");
-      ASSERT_CLOSE(s.kd, kd, relativeTo(kd)) << "spring " << s.i << "-" << s.j << ", " << in
-                                             << hint("the constants of the spring's type");
-    }
+    expectTheClothGrid(spec, result, in);
+    if (HasFatalFailure()) return;
+    expectTheClothSprings(spec, result, in);
+    if (HasFatalFailure()) return;
   }
 }
 

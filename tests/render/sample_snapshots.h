@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "scenes/snapshot.h"
 
@@ -112,68 +114,80 @@ inline Snapshot clothSnapshot(int n = 10) {
   return s;
 }
 
+namespace sample {
+
+inline void addPolygon(Snapshot& s, int body, std::vector<Vec2> points) {
+  ShapeData shape;
+  shape.kind = ShapeData::Kind::Polygon;
+  shape.body = body;
+  shape.points = std::move(points);
+  s.shapes.push_back(shape);
+}
+
+/// A box of half sizes (hx, hy) centred on c, turned by `angle` (rad).
+inline void addBox(Snapshot& s, int body, Vec2 c, double hx, double hy, double angle) {
+  const Vec2 ex(std::cos(angle), std::sin(angle)), ey(-std::sin(angle), std::cos(angle));
+  addPolygon(
+      s, body,
+      {c - hx * ex - hy * ey, c + hx * ex - hy * ey, c + hx * ex + hy * ey, c - hx * ex + hy * ey});
+}
+
+inline void addCircle(Snapshot& s, int body, Vec2 c, double r, double angle) {
+  ShapeData shape;
+  shape.kind = ShapeData::Kind::Circle;
+  shape.body = body;
+  shape.center = c;
+  shape.radius = r;
+  shape.angle = angle;
+  s.shapes.push_back(shape);
+}
+
+/// A joint as toSnapshot fills it: anchors, the bodies' centres, which side is the ground.
+inline void addJoint(Snapshot& s, const char* type, Vec2 anchorA, Vec2 anchorB, Vec2 centerA,
+                     Vec2 centerB, bool groundA) {
+  JointData j{type, anchorA, anchorB, centerA, centerB, groundA, false};
+  s.joints.push_back(j);
+}
+
+}  // namespace sample
+
 /// A Box2D-like picture: a ground edge and box, a pendulum (revolute), a rope (distance joint),
 /// a car (polygon chassis, two wheels on wheel joints), a piston (prismatic), a mouse joint.
 inline Snapshot box2dSnapshot() {
+  using namespace sample;
   Snapshot s;
   s.scene = "box2d_sample";
   s.view.center = Vec2(0, 1.2);
   s.view.height = 4;
-  auto polygon = [&](int body, std::vector<Vec2> points) {
-    ShapeData shape;
-    shape.kind = ShapeData::Kind::Polygon;
-    shape.body = body;
-    shape.points = std::move(points);
-    s.shapes.push_back(shape);
-  };
-  auto box = [&](int body, Vec2 c, double hx, double hy, double angle) {
-    const Vec2 ex(std::cos(angle), std::sin(angle)), ey(-std::sin(angle), std::cos(angle));
-    polygon(body, {c - hx * ex - hy * ey, c + hx * ex - hy * ey, c + hx * ex + hy * ey,
-                   c - hx * ex + hy * ey});
-  };
-  auto circle = [&](int body, Vec2 c, double r, double angle) {
-    ShapeData shape;
-    shape.kind = ShapeData::Kind::Circle;
-    shape.body = body;
-    shape.center = c;
-    shape.radius = r;
-    shape.angle = angle;
-    s.shapes.push_back(shape);
-  };
   // Ground: an edge along y = 0 and a static box.
   ShapeData edge;
   edge.kind = ShapeData::Kind::Edge;
   edge.points = {Vec2(-3, 0), Vec2(3, 0)};
   s.shapes.push_back(edge);
-  box(-1, Vec2(2.2, 0.15), 0.3, 0.15, 0);
+  addBox(s, -1, Vec2(2.2, 0.15), 0.3, 0.15, 0);
   // Pendulum: pivot (-1.5, 3), bob at angle 0.5 rad.
   const Vec2 pivot(-1.5, 3.0), bob = pivot + 0.9 * Vec2(std::sin(0.5), -std::cos(0.5));
-  circle(0, bob, 0.12, 0.5);
-  // Joints as toSnapshot fills them: anchors, the bodies' centres, which side is the ground.
-  auto joint = [&](const char* type, Vec2 anchorA, Vec2 anchorB, Vec2 centerA, Vec2 centerB,
-                   bool groundA) {
-    JointData j{type, anchorA, anchorB, centerA, centerB, groundA, false};
-    s.joints.push_back(j);
-  };
-  joint("revolute", pivot, pivot, Vec2(0, 0), bob, true);  // the rod: pivot to the bob
+  addCircle(s, 0, bob, 0.12, 0.5);
+  addJoint(s, "revolute", pivot, pivot, Vec2(0, 0), bob, true);  // the rod: pivot to the bob
   // A tilted box hanging from a rope.
-  box(1, Vec2(-0.4, 2.0), 0.2, 0.12, 0.3);
-  joint("distance", Vec2(-0.6, 3.0), Vec2(-0.45, 2.12), Vec2(0, 0), Vec2(-0.4, 2.0), true);
+  addBox(s, 1, Vec2(-0.4, 2.0), 0.2, 0.12, 0.3);
+  addJoint(s, "distance", Vec2(-0.6, 3.0), Vec2(-0.45, 2.12), Vec2(0, 0), Vec2(-0.4, 2.0), true);
   // Car: chassis and two wheels with spokes at different angles.
-  polygon(2, {Vec2(-0.9, 0.45), Vec2(0.1, 0.45), Vec2(0.15, 0.65), Vec2(-0.2, 0.85),
+  addPolygon(s, 2,
+             {Vec2(-0.9, 0.45), Vec2(0.1, 0.45), Vec2(0.15, 0.65), Vec2(-0.2, 0.85),
               Vec2(-0.7, 0.85), Vec2(-0.9, 0.65)});
-  circle(3, Vec2(-0.7, 0.2), 0.2, 1.0);
-  circle(4, Vec2(-0.05, 0.2), 0.2, 2.5);
+  addCircle(s, 3, Vec2(-0.7, 0.2), 0.2, 1.0);
+  addCircle(s, 4, Vec2(-0.05, 0.2), 0.2, 2.5);
   const Vec2 chassis(-0.4, 0.6);
-  joint("wheel", Vec2(-0.7, 0.2), Vec2(-0.7, 0.2), chassis, Vec2(-0.7, 0.2), false);
-  joint("wheel", Vec2(-0.05, 0.2), Vec2(-0.05, 0.2), chassis, Vec2(-0.05, 0.2), false);
+  addJoint(s, "wheel", Vec2(-0.7, 0.2), Vec2(-0.7, 0.2), chassis, Vec2(-0.7, 0.2), false);
+  addJoint(s, "wheel", Vec2(-0.05, 0.2), Vec2(-0.05, 0.2), chassis, Vec2(-0.05, 0.2), false);
   // Piston: a slider on a prismatic joint above a static base.
-  box(-1, Vec2(1.2, 0.1), 0.25, 0.1, 0);
-  box(5, Vec2(1.2, 0.9), 0.15, 0.3, 0);
-  joint("prismatic", Vec2(1.2, 0.2), Vec2(1.2, 0.9), Vec2(0, 0), Vec2(1.2, 0.9), true);
+  addBox(s, -1, Vec2(1.2, 0.1), 0.25, 0.1, 0);
+  addBox(s, 5, Vec2(1.2, 0.9), 0.15, 0.3, 0);
+  addJoint(s, "prismatic", Vec2(1.2, 0.2), Vec2(1.2, 0.9), Vec2(0, 0), Vec2(1.2, 0.9), true);
   // A box dragged by the mouse.
-  box(0, Vec2(0.9, 2.4), 0.2, 0.2, -0.4);
-  joint("mouse", Vec2(1.6, 2.9), Vec2(1.0, 2.5), Vec2(0, 0), Vec2(0.9, 2.4), true);
+  addBox(s, 0, Vec2(0.9, 2.4), 0.2, 0.2, -0.4);
+  addJoint(s, "mouse", Vec2(1.6, 2.9), Vec2(1.0, 2.5), Vec2(0, 0), Vec2(0.9, 2.4), true);
   return s;
 }
 

@@ -127,9 +127,100 @@ bool parseDouble(const std::string& text, double* out) {
   return true;
 }
 
+// An option without a value (--sheet's is optional): sets it and returns true; false when
+// `name` is none of them.
+bool parseFlag(const std::string& name, const std::string& value, bool hasValue, Options& o) {
+  if (name == "--help" || name == "-h") {
+    o.help = true;
+  } else if (name == "--list") {
+    o.list = true;
+  } else if (name == "--strain") {
+    o.strain = true;
+  } else if (name == "--goldens") {
+    o.goldens = true;
+  } else if (name == "--replays") {
+    o.replays = true;
+  } else if (name == "--sheet") {
+    o.sheet = true;
+    if (hasValue) o.sheetPath = value;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+std::string parseFrames(const std::string& value, Options& o) {
+  o.frames.clear();
+  for (const std::string& item : split(value)) {
+    int frame = 0;
+    if (!parseInt(item, 0, 36000, &frame)) {
+      return "--frames: '" + item + "' is not a frame number in [0, 36000]";
+    }
+    o.frames.push_back(frame);
+  }
+  o.byTime = false;
+  return "";
+}
+
+std::string parseTimes(const std::string& value, Options& o) {
+  o.times.clear();
+  for (const std::string& item : split(value)) {
+    double t = 0;
+    if (!parseDouble(item, &t)) return "--times: '" + item + "' is not a time >= 0 in seconds";
+    o.times.push_back(t);
+  }
+  o.byTime = true;
+  return "";
+}
+
+std::string parseVariant(const std::string& value, Options& o) {
+  o.variant = value;
+  const bool plain = !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
+  if (!plain) return "--variant " + value + ": use letters, digits, '_' and '-' only";
+  return "";
+}
+
+// An option with a value: sets it; returns what is wrong, empty when nothing is.
+std::string parseValue(const std::string& name, const std::string& value, Options& o) {
+  if (name == "--scene") {
+    o.scenes = split(value);
+  } else if (name == "--frames") {
+    return parseFrames(value, o);
+  } else if (name == "--times") {
+    return parseTimes(value, o);
+  } else if (name == "--size") {
+    const std::size_t x = value.find('x');
+    if (x == std::string::npos || !parseInt(value.substr(0, x), 16, 8192, &o.width) ||
+        !parseInt(value.substr(x + 1), 16, 8192, &o.height)) {
+      return "--size " + value + ": expected WxH, e.g. 512x512 (16 to 8192 pixels a side)";
+    }
+  } else if (name == "--out") {
+    o.out = value;
+    o.outGiven = true;
+  } else if (name == "--backend") {
+    if (!parseHeadlessBackend(value, &o.backend)) {
+      return "--backend " + value + ": expected auto, osmesa or egl";
+    }
+  } else if (name == "--columns") {
+    if (!parseInt(value, 1, 64, &o.columns)) return "--columns " + value + ": expected 1 to 64";
+  } else if (name == "--golden-dir") {
+    o.goldenDir = value;
+  } else if (name == "--only") {
+    o.only = split(value);
+  } else if (name == "--variant") {
+    return parseVariant(value, o);
+  } else {
+    return "unknown option " + name;
+  }
+  return "";
+}
+
 // Parses argv; returns an error message, empty on success.
 std::string parse(int argc, char** argv, Options& o) {
   for (int k = 1; k < argc; ++k) {
+    // --name=value, --name value, or a flag.
     std::string name = argv[k], value;
     bool hasValue = false;
     if (const std::size_t eq = name.find('=');
@@ -138,76 +229,14 @@ std::string parse(int argc, char** argv, Options& o) {
       name = name.substr(0, eq);
       hasValue = true;
     }
-    auto next = [&]() -> bool {
-      if (hasValue) return true;
-      if (k + 1 >= argc) return false;
+    if (parseFlag(name, value, hasValue, o)) continue;
+    if (!hasValue) {
+      if (k + 1 >= argc) return name + " needs a value";
       value = argv[++k];
-      return true;
-    };
-    if (name == "--help" || name == "-h") {
-      o.help = true;
-    } else if (name == "--list") {
-      o.list = true;
-    } else if (name == "--strain") {
-      o.strain = true;
-    } else if (name == "--goldens") {
-      o.goldens = true;
-    } else if (name == "--replays") {
-      o.replays = true;
-    } else if (name == "--sheet") {
-      o.sheet = true;
-      if (hasValue) o.sheetPath = value;
-    } else if (!next()) {
-      return name + " needs a value";
-    } else if (name == "--scene") {
-      o.scenes = split(value);
-    } else if (name == "--frames") {
-      o.frames.clear();
-      for (const std::string& item : split(value)) {
-        int frame = 0;
-        if (!parseInt(item, 0, 36000, &frame)) {
-          return "--frames: '" + item + "' is not a frame number in [0, 36000]";
-        }
-        o.frames.push_back(frame);
-      }
-      o.byTime = false;
-    } else if (name == "--times") {
-      o.times.clear();
-      for (const std::string& item : split(value)) {
-        double t = 0;
-        if (!parseDouble(item, &t)) return "--times: '" + item + "' is not a time >= 0 in seconds";
-        o.times.push_back(t);
-      }
-      o.byTime = true;
-    } else if (name == "--size") {
-      const std::size_t x = value.find('x');
-      if (x == std::string::npos || !parseInt(value.substr(0, x), 16, 8192, &o.width) ||
-          !parseInt(value.substr(x + 1), 16, 8192, &o.height)) {
-        return "--size " + value + ": expected WxH, e.g. 512x512 (16 to 8192 pixels a side)";
-      }
-    } else if (name == "--out") {
-      o.out = value;
-      o.outGiven = true;
-    } else if (name == "--backend") {
-      if (!parseHeadlessBackend(value, &o.backend)) {
-        return "--backend " + value + ": expected auto, osmesa or egl";
-      }
-    } else if (name == "--columns") {
-      if (!parseInt(value, 1, 64, &o.columns)) return "--columns " + value + ": expected 1 to 64";
-    } else if (name == "--golden-dir") {
-      o.goldenDir = value;
-    } else if (name == "--only") {
-      o.only = split(value);
-    } else if (name == "--variant") {
-      o.variant = value;
-      const bool plain = !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
-      });
-      if (!plain) return "--variant " + value + ": use letters, digits, '_' and '-' only";
-    } else {
-      return "unknown option " + name;
     }
+    if (std::string error = parseValue(name, value, o); !error.empty()) return error;
   }
+  // What to do: a flag that needs nothing more, or scenes and their frames.
   if (o.help || o.list || o.goldens || o.replays) return "";
   if (o.scenes.empty()) return "say which scene to render: --scene NAME (--list shows them)";
   if (o.frames.empty() && o.times.empty())
@@ -265,7 +294,84 @@ std::string caption(const std::string& scene, int frame, double dt) {
   return text;
 }
 
+// The frames of `scene` to render: --frames as given, or --times at the nearest whole frame.
+std::vector<int> framesToRender(const Options& o, const std::string& scene, double dt) {
+  if (!o.byTime) return o.frames;
+  std::vector<int> frames;
+  for (double t : o.times) {
+    const int frame = static_cast<int>(std::lround(t / dt));
+    if (std::abs(frame * dt - t) > 1e-9) {
+      std::printf("  %s: %g s is not a whole frame of %g s: frame %d (%.4f s)\n", scene.c_str(), t,
+                  dt, frame, frame * dt);
+    }
+    frames.push_back(frame);
+  }
+  return frames;
+}
+
+// The contact sheet's cells so far: each frame's image and caption.
+struct Sheet {
+  std::vector<Image> images;
+  std::vector<std::string> labels;
+};
+
+enum class SceneOutcome { Rendered, CodeFailed, RenderFailed };
+
+// Runs `scene` and writes its frames as PNG files, or adds them to the sheet (--sheet).
+SceneOutcome renderScene(const Options& o, Gl& gl, const std::string& scene, Sheet& sheet) {
+  const double dt = defaultParams(scene).dt;
+  const std::vector<int> frames = framesToRender(o, scene, dt);
+  const harness::SceneResult result = runScene(scene, frames);
+  if (!result.ok()) {
+    std::fprintf(stderr, "a6_render: %s: the student code failed: %s\n", scene.c_str(),
+                 result.error.c_str());
+    return SceneOutcome::CodeFailed;
+  }
+  RenderOptions options;
+  options.colorSpringsByStrain = o.strain;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const Image image = gl.renderer->render(result.snapshots[k], o.width, o.height, options);
+    if (image.empty()) {
+      std::fprintf(stderr, "a6_render: %s\n", gl.renderer->error().c_str());
+      return SceneOutcome::RenderFailed;
+    }
+    if (o.sheet) {
+      sheet.images.push_back(image);
+      sheet.labels.push_back(caption(scene, frames[k], dt));
+      continue;
+    }
+    const std::string path = (std::filesystem::path(o.out) / frameFile(scene, frames[k])).string();
+    if (std::string error = writePng(image, path); !error.empty()) {
+      std::fprintf(stderr, "a6_render: %s\n", error.c_str());
+      return SceneOutcome::RenderFailed;
+    }
+    std::printf("  %s  (%s, frame %d, t = %.3f s)\n", path.c_str(), scene.c_str(), frames[k],
+                frames[k] * dt);
+  }
+  return SceneOutcome::Rendered;
+}
+
+// Composes the contact sheet (a row per scene unless --columns) and writes it.
+bool writeSheet(const Options& o, const Sheet& sheet) {
+  const int perScene = static_cast<int>(o.byTime ? o.times.size() : o.frames.size());
+  const int columns = o.columns > 0 ? o.columns : std::max(perScene, 1);
+  std::string path = o.sheetPath;
+  if (path.empty()) {
+    path = (std::filesystem::path(o.out) /
+            (o.scenes.size() == 1 ? o.scenes[0] + "_sheet.png" : std::string("sheet.png")))
+               .string();
+  }
+  if (std::string error = writePng(contactSheet(sheet.images, columns, sheet.labels), path);
+      !error.empty()) {
+    std::fprintf(stderr, "a6_render: %s\n", error.c_str());
+    return false;
+  }
+  std::printf("  %s  (contact sheet, %zu frames)\n", path.c_str(), sheet.images.size());
+  return true;
+}
+
 int renderScenes(const Options& o) {
+  // Every scene known, and a GL context, before anything runs.
   for (const std::string& scene : o.scenes) {
     if (!sceneInfo(scene)) {
       std::fprintf(stderr, "a6_render: unknown scene '%s'. Scenes: %s\n", scene.c_str(),
@@ -283,88 +389,27 @@ int renderScenes(const Options& o) {
   std::printf("a6_render: %s student files, %s: %s\n", A6_RENDER_STUDENT,
               gl.context.context->backend().c_str(), gl.context.context->description().c_str());
 
-  RenderOptions options;
-  options.colorSpringsByStrain = o.strain;
-  std::vector<Image> sheet;
-  std::vector<std::string> labels;
+  // A scene whose code fails is skipped (and the exit code says so); a failed render stops all.
+  Sheet sheet;
   int failures = 0;
   for (const std::string& scene : o.scenes) {
-    const double dt = defaultParams(scene).dt;
-    // Times to frames: the nearest whole frame.
-    std::vector<int> frames = o.frames;
-    if (o.byTime) {
-      frames.clear();
-      for (double t : o.times) {
-        const int frame = static_cast<int>(std::lround(t / dt));
-        if (std::abs(frame * dt - t) > 1e-9) {
-          std::printf("  %s: %g s is not a whole frame of %g s: frame %d (%.4f s)\n", scene.c_str(),
-                      t, dt, frame, frame * dt);
-        }
-        frames.push_back(frame);
-      }
-    }
-    const harness::SceneResult result = runScene(scene, frames);
-    if (!result.ok()) {
-      std::fprintf(stderr, "a6_render: %s: the student code failed: %s\n", scene.c_str(),
-                   result.error.c_str());
-      ++failures;
-      continue;
-    }
-    for (std::size_t k = 0; k < frames.size(); ++k) {
-      const Image image = gl.renderer->render(result.snapshots[k], o.width, o.height, options);
-      if (image.empty()) {
-        std::fprintf(stderr, "a6_render: %s\n", gl.renderer->error().c_str());
-        return 1;
-      }
-      if (o.sheet) {
-        sheet.push_back(image);
-        labels.push_back(caption(scene, frames[k], dt));
-        continue;
-      }
-      const std::string path =
-          (std::filesystem::path(o.out) / frameFile(scene, frames[k])).string();
-      if (std::string error = writePng(image, path); !error.empty()) {
-        std::fprintf(stderr, "a6_render: %s\n", error.c_str());
-        return 1;
-      }
-      std::printf("  %s  (%s, frame %d, t = %.3f s)\n", path.c_str(), scene.c_str(), frames[k],
-                  frames[k] * dt);
-    }
+    const SceneOutcome outcome = renderScene(o, gl, scene, sheet);
+    if (outcome == SceneOutcome::RenderFailed) return 1;
+    if (outcome == SceneOutcome::CodeFailed) ++failures;
   }
-  if (o.sheet && !sheet.empty()) {
-    const int perScene = static_cast<int>(o.byTime ? o.times.size() : o.frames.size());
-    const int columns = o.columns > 0 ? o.columns : std::max(perScene, 1);
-    std::string path = o.sheetPath;
-    if (path.empty()) {
-      path = (std::filesystem::path(o.out) /
-              (o.scenes.size() == 1 ? o.scenes[0] + "_sheet.png" : std::string("sheet.png")))
-                 .string();
-    }
-    if (std::string error = writePng(contactSheet(sheet, columns, labels), path); !error.empty()) {
-      std::fprintf(stderr, "a6_render: %s\n", error.c_str());
-      return 1;
-    }
-    std::printf("  %s  (contact sheet, %zu frames)\n", path.c_str(), sheet.size());
-  }
+  if (o.sheet && !sheet.images.empty() && !writeSheet(o, sheet)) return 1;
   return failures ? 1 : 0;
 }
 
-// Re-renders the reference images of the manifest with the linked (solution) files.
-int renderGoldens(const Options& o) {
-  if (std::string(A6_RENDER_STUDENT_SET) != "solution") {
-    std::fprintf(stderr,
-                 "a6_render --goldens: this binary runs the '%s' student files; reference images "
-                 "come from the solution only. Run a6_render_solution --goldens instead.\n",
-                 A6_RENDER_STUDENT);
-    return 2;
-  }
-  const std::string manifestPath = (std::filesystem::path(o.goldenDir) / "manifest.json").string();
-  golden::ManifestResult read = golden::readManifest(manifestPath);
-  if (!read) {
-    std::fprintf(stderr, "a6_render: %s\n", read.error.c_str());
-    return 1;
-  }
-  golden::Manifest& manifest = read.manifest;
+// Whether --only picked `image` (no --only: every image).
+bool selected(const Options& o, const golden::GoldenImage& image) {
+  return o.only.empty() || std::find(o.only.begin(), o.only.end(), image.name) != o.only.end();
+}
+
+// Every --only name is an image of the manifest, and every image's scene is known: 0, or the
+// exit code.
+int checkGoldenRequest(const Options& o, const golden::Manifest& manifest,
+                       const std::string& manifestPath) {
   for (const std::string& name : o.only) {
     if (!manifest.find(name)) {
       std::fprintf(stderr, "a6_render: --only %s: no such image in %s\n", name.c_str(),
@@ -380,6 +425,79 @@ int renderGoldens(const Options& o) {
       return 1;
     }
   }
+  return 0;
+}
+
+// The selected images' scenes, run once each, recording every frame their images need.
+struct GoldenRuns {
+  std::map<std::string, std::vector<int>> framesOf;
+  std::map<std::string, harness::SceneResult> runs;
+};
+
+bool runGoldenScenes(const Options& o, const golden::Manifest& manifest, GoldenRuns& g) {
+  for (const golden::GoldenImage& image : manifest.images) {
+    if (selected(o, image)) g.framesOf[image.scene].push_back(image.frame);
+  }
+  for (const auto& [scene, frames] : g.framesOf) {
+    g.runs[scene] = runScene(scene, frames);
+    if (!g.runs[scene].ok()) {
+      std::fprintf(stderr, "a6_render: %s: %s\n", scene.c_str(), g.runs[scene].error.c_str());
+      return false;
+    }
+  }
+  return true;
+}
+
+// Renders `image` from its scene's run and writes it: over its primary baseline (the manifest
+// entry then names this renderer), or as the --variant baseline.
+bool writeGolden(const Options& o, Gl& gl, const GoldenRuns& g, const std::string& description,
+                 golden::GoldenImage& image) {
+  const std::vector<int>& frames = g.framesOf.at(image.scene);
+  const std::size_t k = std::find(frames.begin(), frames.end(), image.frame) - frames.begin();
+  const Image picture =
+      gl.renderer->render(g.runs.at(image.scene).snapshots[k], image.width, image.height);
+  if (picture.empty()) {
+    std::fprintf(stderr, "a6_render: %s: %s\n", image.name.c_str(), gl.renderer->error().c_str());
+    return false;
+  }
+  std::string file = image.baselines.front();
+  if (!o.variant.empty()) {
+    file = image.name + "." + o.variant + ".png";
+    if (std::find(image.baselines.begin(), image.baselines.end(), file) == image.baselines.end())
+      image.baselines.push_back(file);
+  } else {
+    image.renderer = description;
+    image.studentFiles = "solution";
+  }
+  image.time = image.frame * defaultParams(image.scene).dt;
+  const std::string path = (std::filesystem::path(o.goldenDir) / file).string();
+  if (std::string error = writePng(picture, path); !error.empty()) {
+    std::fprintf(stderr, "a6_render: %s\n", error.c_str());
+    return false;
+  }
+  std::printf("  %-28s %s frame %d (%.3f s), %dx%d\n", file.c_str(), image.scene.c_str(),
+              image.frame, image.time, image.width, image.height);
+  return true;
+}
+
+// Re-renders the reference images of the manifest with the linked (solution) files.
+int renderGoldens(const Options& o) {
+  if (std::string(A6_RENDER_STUDENT_SET) != "solution") {
+    std::fprintf(stderr,
+                 "a6_render --goldens: this binary runs the '%s' student files; reference images "
+                 "come from the solution only. Run a6_render_solution --goldens instead.\n",
+                 A6_RENDER_STUDENT);
+    return 2;
+  }
+  // The manifest, checked against the request, and a GL context.
+  const std::string manifestPath = (std::filesystem::path(o.goldenDir) / "manifest.json").string();
+  golden::ManifestResult read = golden::readManifest(manifestPath);
+  if (!read) {
+    std::fprintf(stderr, "a6_render: %s\n", read.error.c_str());
+    return 1;
+  }
+  golden::Manifest& manifest = read.manifest;
+  if (const int code = checkGoldenRequest(o, manifest, manifestPath); code != 0) return code;
   Gl gl = makeGl(o.backend, 256, 256);
   if (!gl.error.empty()) {
     std::fprintf(stderr, "%s\n", gl.error.c_str());
@@ -389,50 +507,13 @@ int renderGoldens(const Options& o) {
   std::printf("a6_render --goldens: solution files, %s: %s\n",
               gl.context.context->backend().c_str(), description.c_str());
 
-  auto selected = [&](const golden::GoldenImage& image) {
-    return o.only.empty() || std::find(o.only.begin(), o.only.end(), image.name) != o.only.end();
-  };
-  // One run per scene, recording every frame its images need.
-  std::map<std::string, std::vector<int>> framesOf;
-  for (const golden::GoldenImage& image : manifest.images) {
-    if (selected(image)) framesOf[image.scene].push_back(image.frame);
-  }
-  std::map<std::string, harness::SceneResult> runs;
-  for (const auto& [scene, frames] : framesOf) {
-    runs[scene] = runScene(scene, frames);
-    if (!runs[scene].ok()) {
-      std::fprintf(stderr, "a6_render: %s: %s\n", scene.c_str(), runs[scene].error.c_str());
-      return 1;
-    }
-  }
+  // The runs, the images, then the manifest that describes them.
+  GoldenRuns runs;
+  if (!runGoldenScenes(o, manifest, runs)) return 1;
   int written = 0;
   for (golden::GoldenImage& image : manifest.images) {
-    if (!selected(image)) continue;
-    const std::vector<int>& frames = framesOf[image.scene];
-    const std::size_t k = std::find(frames.begin(), frames.end(), image.frame) - frames.begin();
-    const Image picture =
-        gl.renderer->render(runs[image.scene].snapshots[k], image.width, image.height);
-    if (picture.empty()) {
-      std::fprintf(stderr, "a6_render: %s: %s\n", image.name.c_str(), gl.renderer->error().c_str());
-      return 1;
-    }
-    std::string file = image.baselines.front();
-    if (!o.variant.empty()) {
-      file = image.name + "." + o.variant + ".png";
-      if (std::find(image.baselines.begin(), image.baselines.end(), file) == image.baselines.end())
-        image.baselines.push_back(file);
-    } else {
-      image.renderer = description;
-      image.studentFiles = "solution";
-    }
-    image.time = image.frame * defaultParams(image.scene).dt;
-    const std::string path = (std::filesystem::path(o.goldenDir) / file).string();
-    if (std::string error = writePng(picture, path); !error.empty()) {
-      std::fprintf(stderr, "a6_render: %s\n", error.c_str());
-      return 1;
-    }
-    std::printf("  %-28s %s frame %d (%.3f s), %dx%d\n", file.c_str(), image.scene.c_str(),
-                image.frame, image.time, image.width, image.height);
+    if (!selected(o, image)) continue;
+    if (!writeGolden(o, gl, runs, description, image)) return 1;
     ++written;
   }
   if (std::string error = golden::writeManifest(manifest, manifestPath); !error.empty()) {
