@@ -19,8 +19,8 @@
 #include "checks/checks.h"
 #include "common/limits.h"
 #include "grading/grading.h"
+#include "rubric/rubric.h"
 #include "sandbox/sandbox.h"
-#include "scoring/rubric.h"
 
 namespace fs = std::filesystem;
 namespace a6::paths {

@@ -59,10 +59,10 @@
 #include "batch/batch.h"
 #include "batch/command_line.h"
 #include "batch/progress.h"
+#include "common/atomic_write.h"
 #include "common/fixed.h"
 #include "common/read_all.h"
 #include "insights/page.h"
-#include "report/report.h"  // writeFileAtomically
 #include "sandbox/process.h"
 
 namespace fs = std::filesystem;

@@ -10,10 +10,10 @@
 #include "checks/budgeted_student.h"
 #include "checks/collector.h"
 #include "checks/recording_student.h"
+#include "checks/runs.h"
 #include "golden_checks.h"
 #include "gtest_flags.h"
 #include "probe/probe_pair.h"
-#include "replay/runs.h"
 #include "suite.h"
 #include "watched_student.h"
 
@@ -327,7 +327,12 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
         run.particleTrajectories =
             runParticleTrajectories(student, recorded.transcript(), failedChecks(run.tests));
       }
+    } catch (const std::exception& e) {
+      run.notes.push_back(
+          std::string("the incidents and replays after the checks were left out: ") + e.what());
     } catch (...) {
+      run.notes.push_back(
+          "the incidents and replays after the checks were left out: an error of no known kind");
     }
   }
   gStudent = nullptr;

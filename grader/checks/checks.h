@@ -21,7 +21,7 @@
 #include "checks/transcript.h"
 #include "common/limits.h"
 #include "harness/student_code.h"
-#include "scoring/rubric.h"
+#include "rubric/rubric.h"
 
 namespace a6::grader {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "checks/outcome.h"
-#include "scoring/rubric.h"
+#include "rubric/rubric.h"
 
 namespace a6::grader {
 

@@ -15,7 +15,7 @@
 #include "checks/checks.h"
 #include "common/limits.h"
 #include "harness/student_code.h"
-#include "scoring/rubric.h"
+#include "rubric/rubric.h"
 
 namespace a6::grader {
 

@@ -9,7 +9,8 @@
 #include <set>
 #include <sstream>
 
-#include "report/report.h"  // htmlEscape
+#include "common/atomic_write.h"
+#include "common/html_escape.h"
 
 namespace a6::grader::insights {
 namespace {

@@ -1,4 +1,4 @@
-// The replays stage: the student's runs of the imaged scenes (replay/runs.h) beside the
+// The replays stage: the student's runs of the imaged scenes (checks/runs.h) beside the
 // reference runs (tests/golden/replays/, packed from the solution by a6_render_solution
 // --replays), measured for the report: the energy over time, the position error, the frame
 // where the two part, and one sentence on what the plot's shape means.

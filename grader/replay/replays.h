@@ -22,7 +22,7 @@ std::vector<ReplayView> buildReplays(const std::vector<SceneRun>& runs,
 std::vector<ReplayView> trajectoryReplays(const Transcript& transcript,
                                           const std::vector<std::string>& failedChecks);
 
-/// Task 5's failed checks' runs of particles (replay/runs.h: runParticleTrajectories),
+/// Task 5's failed checks' runs of particles (checks/runs.h: runParticleTrajectories),
 /// replayed beside the reference's update at the same step counts (mistakes.h:
 /// referenceParticleRun; none without the library of mistakes), for those whose runs differ.
 std::vector<ReplayView> particleTrajectoryReplays(const std::vector<ParticleTrajectory>& runs);

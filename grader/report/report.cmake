@@ -4,7 +4,7 @@
 add_library(a6_report STATIC ${CMAKE_CURRENT_SOURCE_DIR}/report/report.cpp
                              ${CMAKE_CURRENT_SOURCE_DIR}/report/replay_html.cpp)
 target_include_directories(a6_report PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(a6_report PUBLIC a6_rubric PRIVATE a6_replay nlohmann_json::nlohmann_json)
+target_link_libraries(a6_report PUBLIC a6_score PRIVATE a6_replay nlohmann_json::nlohmann_json)
 target_compile_options(a6_report PRIVATE ${A6_WARNINGS})
 
 # The default rubric, beside the grader in the build tree (the packaging step copies it too).

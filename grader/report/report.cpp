@@ -307,36 +307,14 @@ std::string resultsJson(const GradeReport& report) {
   return root.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
-std::string writeFileAtomically(const std::filesystem::path& file, const std::string& text) {
-  std::error_code ec;
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
-  if (ec) return "cannot create " + file.parent_path().string() + ": " + ec.message();
-  const std::filesystem::path tmp =
-      file.string() + ".tmp." + std::to_string(static_cast<long>(::getpid()));
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) return "cannot write " + tmp.string() + ": " + std::strerror(errno);
-  // A failure's words (errno read first), the temporary file removed.
-  auto failed = [&](const std::string& what) {
-    const std::string why = std::strerror(errno);
-    ::unlink(tmp.c_str());
-    return what + ": " + why;
-  };
-  for (std::size_t done = 0; done < text.size();) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const std::string why = failed("cannot write " + tmp.string());
-      ::close(fd);
-      return why;
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  const bool synced = ::fsync(fd) == 0;  // closed either way
-  if (::close(fd) != 0 || !synced) return failed("cannot write " + tmp.string());
-  if (::rename(tmp.c_str(), file.c_str()) != 0) {
-    return failed("cannot rename " + tmp.string() + " to " + file.string());
-  }
-  return {};
+void score(GradeReport& report, const Rubric& rubric) {
+  Scores s = scoreTests(report.tests, rubric);
+  report.items = std::move(s.items);
+  report.score = s.score;
+  report.maxScore = s.maxScore;
+  report.extraCredit = s.extraCredit;
+  report.rubricTitle = std::move(s.rubricTitle);
+  report.warnings.insert(report.warnings.end(), s.warnings.begin(), s.warnings.end());
 }
 
 std::string writeResultsJson(const GradeReport& report, const std::filesystem::path& file) {
@@ -358,19 +336,6 @@ std::string writeResultsJson(const GradeReport& report, const std::filesystem::p
 }
 
 // HTML -----------------------------------------------------------------------------------------
-
-std::string htmlEscape(const std::string& text) {
-  static const std::map<char, std::string_view> kEntities = {{'&', "&amp;"},  {'<', "&lt;"},
-                                                             {'>', "&gt;"},   {'"', "&quot;"},
-                                                             {'\'', "&#39;"}, {'\0', "&#xFFFD;"}};
-  std::string out;
-  out.reserve(text.size() + text.size() / 8);
-  for (const char c : text) {
-    const auto e = kEntities.find(c);
-    out += e == kEntities.end() ? std::string_view(&c, 1) : e->second;
-  }
-  return out;
-}
 
 std::string base64(const std::string& bytes) {
   return replay::toBase64(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());

@@ -9,10 +9,12 @@
 
 #include "build/build.h"
 #include "checks/outcome.h"
+#include "common/atomic_write.h"
+#include "common/html_escape.h"
 #include "intake/intake.h"
 #include "mistakes/named.h"
 #include "replay/replay_view.h"
-#include "scoring/rubric.h"
+#include "rubric/rubric.h"
 #include "scoring/score.h"
 
 namespace a6::grader {
@@ -51,6 +53,14 @@ struct GradeReport {
   Incidents incidents;  ///< checks/outcome.h
 };
 
+/// Scores `report.tests` with `rubric` (scoring/score.h): its items, score, maxScore,
+/// extraCredit and rubricTitle, and the scoring's warnings added to its own.
+void score(GradeReport& report, const Rubric& rubric);
+/// The part of the report's score a student sees before the due date.
+inline VisibleTotals visibleTotals(const GradeReport& report) {
+  return visibleTotals(report.items);
+}
+
 /// results.json as Gradescope reads it (see docs/instructor.md): one test per rubric item.
 std::string resultsJson(const GradeReport& report);
 /// Writes resultsJson() atomically (a temporary file in the same folder, then rename). Returns
@@ -65,9 +75,6 @@ std::string writeHtml(const GradeReport& report, const std::filesystem::path& fi
 std::string terminalSummary(const GradeReport& report, bool color);
 
 /// Helpers, public for the tests.
-std::string htmlEscape(const std::string& text);
 std::string base64(const std::string& bytes);
-/// Writes `text` to `file` atomically; returns an empty string or the error.
-std::string writeFileAtomically(const std::filesystem::path& file, const std::string& text);
 
 }  // namespace a6::grader

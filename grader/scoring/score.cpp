@@ -5,8 +5,6 @@
 #include <map>
 #include <sstream>
 
-#include "report/report.h"
-
 namespace a6::grader {
 
 double roundPoints(double points) { return std::round(points * 1e4) / 1e4; }
@@ -17,9 +15,9 @@ std::string formatPoints(double points) {
   return out.str();
 }
 
-VisibleTotals visibleTotals(const GradeReport& report) {
+VisibleTotals visibleTotals(const std::vector<ScoredItem>& items) {
   VisibleTotals v;
-  for (const ScoredItem& s : report.items) {
+  for (const ScoredItem& s : items) {
     const bool now = s.item.visibility == Visibility::Visible;
     if (!now) {
       (s.item.extraCredit ? v.laterExtraCredit : v.laterPoints) += s.item.points;
@@ -36,36 +34,35 @@ VisibleTotals visibleTotals(const GradeReport& report) {
   return v;
 }
 
-void score(GradeReport& report, const Rubric& rubric) {
-  report.items.clear();
-  report.score = report.extraCredit = 0;
-  report.maxScore = rubric.totalPoints;
-  report.rubricTitle = rubric.title;
+Scores scoreTests(const std::vector<TestOutcome>& tests, const Rubric& rubric) {
+  Scores scores;
+  scores.maxScore = rubric.totalPoints;
+  scores.rubricTitle = rubric.title;
   for (const RubricItem& item : rubric.items)
-    report.items.push_back(ScoredItem{item, 0, 0, 0, {}, {}});
+    scores.items.push_back(ScoredItem{item, 0, 0, 0, {}, {}});
 
   // Each test counts for the first item that matches it.
-  for (const TestOutcome& t : report.tests) {
+  for (const TestOutcome& t : tests) {
     const int index = rubric.itemFor(t.name);
     if (index < 0) {
-      report.warnings.push_back("test " + t.name + " matches no rubric item: it scores nothing");
+      scores.warnings.push_back("test " + t.name + " matches no rubric item: it scores nothing");
       continue;
     }
-    ScoredItem& s = report.items[static_cast<std::size_t>(index)];
+    ScoredItem& s = scores.items[static_cast<std::size_t>(index)];
     s.tests.push_back(&t);
     (t.passed ? s.passed : s.failed)++;
   }
 
   std::map<int, int> rank;  // items seen so far per task, for "task.rank" numbers
   double regular = 0;
-  for (ScoredItem& s : report.items) {
+  for (ScoredItem& s : scores.items) {
     s.number = std::to_string(s.item.task) + "." + std::to_string(++rank[s.item.task]);
     const int n = s.passed + s.failed;
     if (n == 0) {
       std::string where = rubric.file.empty() ? ""
                                               : " (" + rubric.file.filename().string() + ":" +
                                                     std::to_string(s.item.line) + ")";
-      report.warnings.push_back("rubric item '" + s.item.name + "'" + where +
+      scores.warnings.push_back("rubric item '" + s.item.name + "'" + where +
                                 " matches no test: its " + formatPoints(s.item.points) +
                                 " points cannot be earned");
       s.score = 0;
@@ -75,10 +72,11 @@ void score(GradeReport& report, const Rubric& rubric) {
       // points * passed / n, not a sum of shares: full marks are exactly the points.
       s.score = roundPoints(s.item.points * s.passed / n);
     }
-    (s.item.extraCredit ? report.extraCredit : regular) += s.score;
+    (s.item.extraCredit ? scores.extraCredit : regular) += s.score;
   }
-  report.extraCredit = roundPoints(report.extraCredit);
-  report.score = roundPoints(regular + report.extraCredit);
+  scores.extraCredit = roundPoints(scores.extraCredit);
+  scores.score = roundPoints(regular + scores.extraCredit);
+  return scores;
 }
 
 }  // namespace a6::grader

@@ -1,7 +1,6 @@
-# Scoring (scoring/): the rubric (TOML, read with toml++: cmake/A6Toml.cmake) and the points it
-# gives (score.cpp). Gives a6_rubric.
-add_library(a6_rubric STATIC ${CMAKE_CURRENT_SOURCE_DIR}/scoring/rubric.cpp
-                            ${CMAKE_CURRENT_SOURCE_DIR}/scoring/score.cpp)
-target_include_directories(a6_rubric PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(a6_rubric PRIVATE tomlplusplus::tomlplusplus)
-target_compile_options(a6_rubric PRIVATE ${A6_WARNINGS})
+# Scoring (scoring/): the points the rubric gives for the checks' outcomes (score.cpp). Gives
+# a6_score.
+add_library(a6_score STATIC ${CMAKE_CURRENT_SOURCE_DIR}/scoring/score.cpp)
+target_include_directories(a6_score PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(a6_score PUBLIC a6_rubric)
+target_compile_options(a6_score PRIVATE ${A6_WARNINGS})

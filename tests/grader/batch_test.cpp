@@ -33,9 +33,9 @@
 #include <vector>
 
 #include "report/report.h"
+#include "rubric/rubric.h"
 #include "run_command.h"
 #include "sandbox/process.h"
-#include "scoring/rubric.h"
 #include "staging.h"
 
 namespace {

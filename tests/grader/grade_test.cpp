@@ -13,8 +13,8 @@
 #include <sstream>
 #include <string>
 
+#include "rubric/rubric.h"
 #include "run_command.h"
-#include "scoring/rubric.h"
 
 namespace {
 

@@ -29,8 +29,8 @@
 #include <vector>
 
 #include "harness/tasks.h"
+#include "rubric/rubric.h"
 #include "run_command.h"
-#include "scoring/rubric.h"
 
 namespace {
 

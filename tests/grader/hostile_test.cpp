@@ -40,8 +40,8 @@
 #include "common/fnv1a.h"
 #include "common/limits.h"
 #include "poisoner.h"
+#include "rubric/rubric.h"
 #include "run_command.h"
-#include "scoring/rubric.h"
 #include "staging.h"
 
 namespace {

@@ -17,7 +17,7 @@
 
 #include "grading/grading.h"
 #include "harness/student_code.h"
-#include "scoring/rubric.h"
+#include "rubric/rubric.h"
 #include "summary.h"
 
 namespace {

@@ -1,6 +1,6 @@
 // The rubric: its format, every kind of error with its message and line, the first-match rule,
 // and the default rubric's coverage of the suite the grader runs.
-#include "scoring/rubric.h"
+#include "rubric/rubric.h"
 
 #include <gtest/gtest.h>
 

@@ -31,8 +31,8 @@
 #include <string>
 #include <vector>
 
+#include "rubric/rubric.h"
 #include "run_command.h"
-#include "scoring/rubric.h"
 #include "staging.h"
 
 namespace {

@@ -11,7 +11,7 @@
 
 #include "batch/batch.h"
 #include "insights/insights.h"
-#include "scoring/rubric.h"
+#include "rubric/rubric.h"
 
 namespace a6::test::tasks_table {
 namespace {

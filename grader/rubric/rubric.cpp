@@ -1,4 +1,4 @@
-#include "scoring/rubric.h"
+#include "rubric/rubric.h"
 
 #include <toml++/toml.h>
 

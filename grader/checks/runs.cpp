@@ -1,4 +1,4 @@
-#include "replay/runs.h"
+#include "checks/runs.h"
 
 #include <algorithm>
 #include <chrono>
