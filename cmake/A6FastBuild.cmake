@@ -107,6 +107,35 @@ const char ${name}[] = \"${path}\";
   target_sources(${target} PRIVATE ${file})
 endfunction()
 
+# a6_embedded_text(<target> <name> <file>): the text of <file> (a page's CSS or JavaScript, kept
+# as a file of its own) as `a6::assets::<name>`, a `const char[]` that begins with a newline,
+# defined in a file generated for <target> when CMake configures (an edit of <file> configures
+# again). Code declares `namespace a6::assets { extern const char <name>[]; }`.
+function(a6_embedded_text target name file)
+  file(READ ${file} text)
+  if(text MATCHES "\\)a6asset\"")
+    message(FATAL_ERROR "${file} holds ')a6asset\"', which ends its embedding")
+  endif()
+  set(out ${CMAKE_CURRENT_BINARY_DIR}/a6_assets/${target}_${name}.cpp)
+  file(RELATIVE_PATH source ${PROJECT_SOURCE_DIR} ${file})  # the same text in every checkout
+  set(content "// Generated (cmake/A6FastBuild.cmake, a6_embedded_text) from ${source}.
+namespace a6::assets {
+extern const char ${name}[];
+const char ${name}[] = R\"a6asset(
+${text})a6asset\";
+}  // namespace a6::assets
+")
+  set(old "")
+  if(EXISTS ${out})
+    file(READ ${out} old)
+  endif()
+  if(NOT old STREQUAL content)
+    file(WRITE ${out} "${content}")
+  endif()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${file})
+  target_sources(${target} PRIVATE ${out})
+endfunction()
+
 # a6_bundled(<target> <count> <file>...): compiles the given .cpp files of <target> <count> to a
 # translation unit (a bundle, generated in the build folder, that includes them), so that the
 # headers they share (GoogleTest, Eigen, nlohmann-json: about 3 s of every file) are read once

@@ -12,49 +12,21 @@
 #include "common/atomic_write.h"
 #include "common/html_escape.h"
 
+namespace a6::assets {  // the page's assets, embedded at build time (a6_embedded_text)
+extern const char insights_css[];
+extern const char sort_tables_js[];
+}  // namespace a6::assets
+
 namespace a6::grader::insights {
 namespace {
 
-const char* const kCss = R"(
-body { font: 14px/1.45 system-ui, sans-serif; margin: 2em auto; max-width: 80em; color: #222; padding: 0 1em; }
-h1 { font-size: 1.6em; margin-bottom: .2em; } h2 { margin-top: 1.8em; border-bottom: 1px solid #ddd; }
-table { border-collapse: collapse; margin: .5em 0; } td, th { padding: .25em .7em; text-align: left;
-  border-bottom: 1px solid #eee; vertical-align: top; }
-th { background: #f5f5f5; white-space: nowrap; } th.sort { cursor: pointer; } th.sort:after { content: " \2195"; color: #999; }
-.num { text-align: right; font-variant-numeric: tabular-nums; }
-.bar { display: inline-block; height: .8em; background: #5b8def; vertical-align: middle; }
-.barbox { display: inline-block; width: 8em; background: #eee; margin-right: .5em; }
-.low { background: #d9534f; } .note { color: #555; font-style: italic; }
-.flag { background: #fff4e5; } .plots { display: flex; gap: 2em; flex-wrap: wrap; }
-figure { margin: 0; } figcaption { font-size: .9em; color: #444; text-align: center; }
-.pair { border: 1px solid #ddd; border-radius: 6px; padding: .5em 1em; margin: .8em 0; }
-.side { display: flex; gap: 1em; } .side pre { flex: 1; background: #f7f7f9; border: 1px solid #e4e4e8;
-  padding: .5em; overflow-x: auto; font-size: .85em; margin: .3em 0; }
-svg text { font: 11px system-ui, sans-serif; fill: #333; }
-)";
+const char* const kCss =
+    a6::assets::insights_css;  // grader/insights/assets/insights.css (embedded)
 
 // Sorts a table by the column whose header was clicked: by each cell's data-v when it has
 // one (numbers), else by its text; a second click reverses.
-const char* const kScript = R"(
-document.querySelectorAll('table.sortable').forEach(function (table) {
-  table.querySelectorAll('th').forEach(function (th, col) {
-    th.classList.add('sort');
-    th.addEventListener('click', function () {
-      var body = table.tBodies[0], rows = Array.prototype.slice.call(body.rows);
-      var dir = th.dataset.dir === 'asc' ? -1 : 1;
-      th.dataset.dir = dir === 1 ? 'asc' : 'desc';
-      function key(row) {
-        var cell = row.cells[col];
-        var v = cell.dataset.v;
-        return v === undefined ? cell.textContent.trim().toLowerCase() : parseFloat(v);
-      }
-      rows.sort(function (a, b) { var x = key(a), y = key(b); return x < y ? -dir : x > y ? dir : 0; });
-      rows.forEach(function (row) { body.appendChild(row); });
-    });
-  });
-});
-document.body.dataset.sortedReady = '1';
-)";
+const char* const kScript =
+    a6::assets::sort_tables_js;  // grader/insights/assets/sort_tables.js (embedded)
 
 std::string fmt(double x, int digits = 2) {
   char buf[32];

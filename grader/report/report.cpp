@@ -19,6 +19,10 @@
 #include "render/replay.h"
 #include "report/replay_html.h"
 
+namespace a6::assets {  // the page's assets, embedded at build time (a6_embedded_text)
+extern const char report_css[];
+}  // namespace a6::assets
+
 namespace a6::grader {
 
 namespace {
@@ -343,29 +347,7 @@ std::string base64(const std::string& bytes) {
 
 namespace {
 
-const char* const kCss = R"(
-body { font: 14px/1.45 system-ui, sans-serif; margin: 2em auto; max-width: 72em; color: #222; }
-h1 { font-size: 1.6em; margin-bottom: .2em; } h2 { margin-top: 1.6em; border-bottom: 1px solid #ddd; }
-table { border-collapse: collapse; margin: .5em 0; } td, th { padding: .25em .7em; text-align: left;
-  border-bottom: 1px solid #eee; vertical-align: top; }
-th { background: #f5f5f5; white-space: nowrap; }
-.num { text-align: right; font-variant-numeric: tabular-nums; }
-.pass { color: #17692b; font-weight: 600; } .fail { color: #b3261e; font-weight: 600; }
-.note { color: #555; font-style: italic; }
-.mistake { background: #fff4e5; border-left: 4px solid #e8710a; padding: .5em .8em; }
-.replay-box { border-top: 1px solid #eee; margin-top: 1em; } .reading { font-weight: 600; }
-.replay { display: flex; gap: 1.5em; flex-wrap: wrap; align-items: flex-start; }
-.views { display: flex; gap: .8em; } canvas { border: 1px solid #ccc; }
-.controls { margin: .4em 0; } .controls .time { font-family: monospace; margin: 0 .5em; }
-.plots { display: flex; flex-direction: column; gap: .4em; }
-.box { padding: .6em 1em; border-radius: 6px; margin: .6em 0; }
-.error { background: #fdecea; border: 1px solid #f5c2c0; } .warn { background: #fff7e0; border: 1px solid #f0d890; }
-pre { background: #f7f7f9; border: 1px solid #e4e4e8; padding: .6em; overflow-x: auto; white-space: pre-wrap; }
-.images { display: flex; gap: 1em; flex-wrap: wrap; } figure { margin: 0; }
-figure img { max-width: 22em; border: 1px solid #ccc; image-rendering: pixelated; }
-figcaption { font-size: .85em; color: #555; text-align: center; }
-.tag { font-size: .8em; background: #eef; border-radius: 4px; padding: 0 .4em; margin-left: .4em; }
-)";
+const char* const kCss = a6::assets::report_css;  // grader/report/assets/report.css (embedded)
 
 void htmlImages(std::ostringstream& out, const TestOutcome& t) {
   if (t.images.empty()) return;
