@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <string>
@@ -353,6 +355,47 @@ TEST(DefaultRubric, CountsEveryCheckTheGraderRunsExactlyOnce) {
   // Every check of the physics suite is among them.
   for (const std::string& name : physicsTests()) {
     EXPECT_EQ(seen.count(name), 1u) << name << " (a6_tests) is not run by a6_grade";
+  }
+}
+#endif
+
+#if defined(A6_TESTS_STARTER_COMMAND)
+// Check -> passed, of the physics suite run on the starter (--gtest_output=json).
+std::map<std::string, bool> starterOutcomes() {
+  const std::string file = "starter_checks.json";
+  int status = 0;
+  run(std::string(A6_TESTS_STARTER_COMMAND) + " --gtest_output=json:" + file + " >/dev/null 2>&1",
+      &status);
+  std::ifstream in(file);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  std::map<std::string, bool> passed;
+  if (j.is_discarded()) return passed;
+  for (const auto& suite : j.value("testsuites", nlohmann::json::array())) {
+    for (const auto& t : suite.value("testsuite", nlohmann::json::array())) {
+      const std::string name = suite.value("name", "") + "." + t.value("name", "");
+      passed[name] = t.value("result", "") == "COMPLETED" && !t.contains("failures");
+    }
+  }
+  return passed;
+}
+
+// The starter earns nothing: no check it passes carries points, unless its item gives them all
+// or nothing and another of its checks fails on the starter. (A check a TA adds that the stubs
+// pass would give every student its points for nothing.)
+TEST(DefaultRubric, NoCheckTheStarterPassesCarriesPoints) {
+  const Rubric r = loadRubric(A6_DEFAULT_RUBRIC);
+  ASSERT_TRUE(r.ok()) << r.error;
+  const std::map<std::string, bool> outcomes = starterOutcomes();
+  ASSERT_GT(outcomes.size(), 90u) << "the starter's suite gave no results";
+  std::map<int, bool> itemFails;  // item -> some check of it fails on the starter
+  for (const auto& [name, passed] : outcomes) itemFails[r.itemFor(name)] |= !passed;
+  for (const auto& [name, passed] : outcomes) {
+    const int index = r.itemFor(name);
+    if (!passed || index < 0) continue;
+    const RubricItem& item = r.items[static_cast<std::size_t>(index)];
+    const bool paid = item.points > 0 && !(item.allOrNothing && itemFails[index]);
+    EXPECT_FALSE(paid) << name << " passes on the starter and earns points of '" << item.name
+                       << "': make it fail on the stubs, or count it for an item of 0 points";
   }
 }
 #endif
