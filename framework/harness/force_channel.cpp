@@ -8,110 +8,156 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
 #include "harness/wire.h"
+#include "harness/wire_fields.h"
 
 namespace a6::harness::forcechannel {
 namespace {
 
 enum Kind { kSpring = 1, kExternal = 2, kSprings = 3, kExternals = 4 };
-constexpr std::size_t kSpringWidth = 11;   // x1, v1, x2, v2, l0, ks, kd
-constexpr std::size_t kParticleWidth = 6;  // x, v, m, T
-constexpr std::size_t kEnvHead = 8;        // g, T_air, b, k_d, k_r, planes, circles
 
 Vec2 notAvailable() { return Vec2::Constant(std::numeric_limits<double>::quiet_NaN()); }
 
-// ---- encoding (the probe's side) ----------------------------------------------------------------
+// ---- encoding (the probe's side): the field lists of harness/wire_fields.h, as doubles ----------
 
-void put(std::vector<double>& out, const Vec2& v) {
-  out.push_back(v.x());
-  out.push_back(v.y());
-}
+// Appends each field it visits: a number as itself, a vector as its two components, an enum by
+// its value, a list as its length and then its items, a spring's particle by its force inputs.
+struct Flatten {
+  std::vector<double>& out;
+
+  template <typename T>
+  void operator()(const char*, T& x) {
+    if constexpr (std::is_same_v<T, Vec2>) {
+      out.insert(out.end(), {x.x(), x.y()});
+    } else if constexpr (std::is_enum_v<T>) {
+      out.push_back(static_cast<double>(static_cast<int>(x)));
+    } else if constexpr (std::is_arithmetic_v<T>) {
+      out.push_back(static_cast<double>(x));
+    } else if constexpr (std::is_same_v<T, Particle*>) {
+      Particle none;  // a spring without its particle: zeros (the student's own bug)
+      wire::forceInputs(*this, x != nullptr ? *x : none);
+    } else if constexpr (isVector<T>::value) {
+      out.push_back(static_cast<double>(x.size()));
+      for (auto& item : x) wire::fields(*this, item);
+    } else {
+      wire::fields(*this, x);
+    }
+  }
+  template <typename T>
+  struct isVector : std::false_type {};
+  template <typename T>
+  struct isVector<std::vector<T>> : std::true_type {};
+};
 
 void putSpring(std::vector<double>& out, const Spring& s) {
-  put(out, s.p1->x);
-  put(out, s.p1->v);
-  put(out, s.p2->x);
-  put(out, s.p2->v);
-  out.insert(out.end(), {s.restLength, s.ks, s.kd});
+  Flatten flat{out};
+  wire::fields(flat, const_cast<Spring&>(s));  // Flatten only reads
 }
 
 void putParticle(std::vector<double>& out, const Particle& p) {
-  put(out, p.x);
-  put(out, p.v);
-  out.insert(out.end(), {p.m, p.temperature});
+  Flatten flat{out};
+  wire::forceInputs(flat, const_cast<Particle&>(p));
 }
 
 void putEnvironment(std::vector<double>& out, const Environment& env) {
-  put(out, env.gravity);
-  out.insert(out.end(),
-             {env.airTemperature, env.buoyancy, env.drag, env.repulsion,
-              static_cast<double>(env.planes.size()), static_cast<double>(env.circles.size())});
-  for (const HalfPlane& plane : env.planes) {
-    put(out, plane.normal);
-    out.push_back(plane.offset);
-  }
-  for (const CircleObstacle& circle : env.circles) {
-    put(out, circle.center);
-    out.push_back(circle.radius);
-  }
+  Flatten flat{out};
+  wire::fields(flat, const_cast<Environment&>(env));
 }
+
+// How many doubles a spring and a particle take (both fixed: they hold no list).
+std::size_t widthOf(void (*put)(std::vector<double>&)) {
+  std::vector<double> out;
+  put(out);
+  return out.size();
+}
+const std::size_t kSpringWidth = widthOf([](std::vector<double>& out) {
+  Particle p;
+  putSpring(out, Spring{&p, &p});
+});
+const std::size_t kParticleWidth = widthOf([](std::vector<double>& out) { putParticle(out, {}); });
 
 // ---- decoding (the grader's side) ---------------------------------------------------------------
 
-Vec2 at(const double* r) { return Vec2(r[0], r[1]); }
+// Reads the fields it visits back from doubles, as Flatten wrote them; `ok` turns false, and
+// stays false, at the end of the input, a list longer than what is left of it, or an enum's
+// unknown value. A spring's particles must point to particles of the reader's before it reads.
+struct Unflatten {
+  const double* at;
+  const double* end;
+  bool ok = true;
+
+  bool take(std::size_t n) {
+    ok = ok && static_cast<std::size_t>(end - at) >= n;
+    return ok;
+  }
+  template <typename T>
+  void operator()(const char*, T& x) {
+    if constexpr (std::is_same_v<T, Vec2>) {
+      if (!take(2)) return;
+      x = Vec2(at[0], at[1]);
+      at += 2;
+    } else if constexpr (std::is_enum_v<T>) {
+      if (!take(1)) return;
+      const double value = *at++;
+      ok = false;
+      for (const auto& [e, name] : wire::namesOf(x)) {
+        if (value != static_cast<double>(static_cast<int>(e))) continue;
+        x = e;
+        ok = true;
+      }
+    } else if constexpr (std::is_same_v<T, bool>) {
+      if (take(1)) x = *at++ != 0;
+    } else if constexpr (std::is_arithmetic_v<T>) {
+      if (take(1)) x = static_cast<T>(*at++);
+    } else if constexpr (std::is_same_v<T, Particle*>) {
+      if (x != nullptr) wire::forceInputs(*this, *x);
+    } else if constexpr (Flatten::isVector<T>::value) {
+      if (!take(1)) return;
+      // Each item takes a double at least: no list outgrows the request it came in.
+      const double n = *at++;
+      ok = n >= 0 && n <= static_cast<double>(end - at) && n == std::floor(n);
+      if (!ok) return;
+      x.resize(static_cast<std::size_t>(n));
+      for (auto& item : x) wire::fields(*this, item);
+    } else {
+      wire::fields(*this, x);
+    }
+  }
+};
 
 Vec2 springForce(const double* in, const ForceModel& models) {
   Particle p1, p2;
-  p1.x = at(in);
-  p1.v = at(in + 2);
-  p2.x = at(in + 4);
-  p2.v = at(in + 6);
-  Spring s;
-  s.p1 = &p1;
-  s.p2 = &p2;
-  s.restLength = in[8];
-  s.ks = in[9];
-  s.kd = in[10];
-  return models.spring ? models.spring(s) : notAvailable();
+  Spring s{&p1, &p2};
+  Unflatten read{in, in + kSpringWidth};
+  wire::fields(read, s);
+  return models.spring && read.ok ? models.spring(s) : notAvailable();
 }
 
 Vec2 externalForce(const double* in, const Environment& env, const ForceModel& models) {
   Particle p;
-  p.x = at(in);
-  p.v = at(in + 2);
-  p.m = in[4];
-  p.temperature = in[5];
-  return models.external ? models.external(p, env) : notAvailable();
+  Unflatten read{in, in + kParticleWidth};
+  wire::forceInputs(read, p);
+  return models.external && read.ok ? models.external(p, env) : notAvailable();
 }
 
 // The environment at r[from, end): its length in doubles, or 0 when malformed.
 std::size_t readEnvironment(const std::vector<double>& r, std::size_t from, Environment& env) {
-  if (r.size() < from + kEnvHead) return 0;
-  const double* e = r.data() + from;
-  const double planes = e[6], circles = e[7];
-  if (!(planes >= 0 && circles >= 0 && planes + circles <= kMaxObstacles)) return 0;
-  const auto nPlanes = static_cast<std::size_t>(planes);
-  const auto nCircles = static_cast<std::size_t>(circles);
-  const std::size_t length = kEnvHead + 3 * (nPlanes + nCircles);
-  if (r.size() < from + length) return 0;
-  env.gravity = at(e);
-  env.airTemperature = e[2];
-  env.buoyancy = e[3];
-  env.drag = e[4];
-  env.repulsion = e[5];
-  const double* o = e + kEnvHead;
-  for (std::size_t k = 0; k < nPlanes; ++k, o += 3) env.planes.push_back({at(o), o[2]});
-  for (std::size_t k = 0; k < nCircles; ++k, o += 3) env.circles.push_back({at(o), o[2]});
-  return length;
+  if (r.size() < from) return 0;
+  Unflatten read{r.data() + from, r.data() + r.size()};
+  wire::fields(read, env);
+  if (!read.ok || env.planes.size() + env.circles.size() > kMaxObstacles) return 0;
+  return static_cast<std::size_t>(read.at - (r.data() + from));
 }
 
 // The forces a request asks for, or false when it is malformed.
@@ -358,7 +404,7 @@ std::size_t serve(int requestFd, int answerFd, int stopFd, const ForceModel& mod
       break;
     }
     reply.clear();
-    for (const Vec2& f : forces) put(reply, f);
+    for (const Vec2& f : forces) reply.insert(reply.end(), {f.x(), f.y()});
     if (!transfer(answerFd, reinterpret_cast<char*>(reply.data()), reply.size() * sizeof(double),
                   false, stopFd)) {
       break;

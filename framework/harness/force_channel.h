@@ -7,9 +7,12 @@
 // it sees the forces of the states it asks about, which a stepper gets anyway.
 //
 // The format (native byte order, both ends on one machine): a 4-byte count n (1 to
-// kMaxRequestDoubles), then n doubles, the first the kind. A spring is x1, v1, x2, v2, l0, ks,
-// kd; a particle x, v, m, T; an environment g, T_air, b, k_d, k_r, the number of planes and of
-// circles, then (normal, offset) of each plane and (center, radius) of each circle.
+// kMaxRequestDoubles), then n doubles, the first the kind. The rest are the field lists of
+// harness/wire_fields.h, the probe's requests' own, as doubles: a spring is fields(Spring), each
+// of its particles as forceInputs(Particle) (x, v, m, T); a particle forceInputs(Particle); an
+// environment fields(Environment), a list as its length and then its items. A field added to
+// Spring or Environment (and listed there, which tests/grader/wire_test.cpp demands) reaches
+// every reference force with no other edit.
 //   1, spring                          -> its force (2 doubles)
 //   2, particle, environment           -> its external force
 //   3, count, count springs            -> their forces (2 count doubles)

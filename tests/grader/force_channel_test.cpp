@@ -165,8 +165,9 @@ TEST(ForceChannel, AMalformedRequestEndsTheServing) {
       {4, 1, 0, -9.81, 293, 0, 0, 0, 0, 0},                       // a particle announced, none
   };
   // Forces enough, against obstacles enough, to keep the grader busy for seconds: refused.
-  std::vector<double> busy = {4, 2048, 0, -9.81, 293, 0, 0, 0, 1024, 0};
+  std::vector<double> busy = {4, 2048, 0, -9.81, 293, 0, 0, 0, 1024};
   for (int k = 0; k < 1024; ++k) busy.insert(busy.end(), {0, 1, -1.0 * k});
+  busy.push_back(0);  // and no circle
   busy.resize(busy.size() + 2048 * 6, 0.5);
   malformed.push_back(busy);
   for (const std::vector<double>& request : malformed) {

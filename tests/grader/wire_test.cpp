@@ -338,9 +338,24 @@ TEST(WireRequests, EveryRequestAndResultSurvivesWithEveryField) {
   everyKindSurvives(f, std::make_index_sequence<std::variant_size_v<harness::Request>>());
 }
 
+// What the force channel sends of a particle: each field of fields(Particle) is a force input or
+// named as none, so that a member added to Particle is sent to the reference forces or said not
+// to matter to them.
+TEST(WireFields, EveryFieldOfAParticleIsAForceInputOrSaidNotToBe) {
+  Names inputs;
+  Particle p;
+  wire::forceInputs(inputs, p);
+  std::vector<std::string> both = inputs.out;
+  both.insert(both.end(), std::begin(wire::kNotForceInputs), std::end(wire::kNotForceInputs));
+  EXPECT_EQ(sorted(both), sorted(namesOf(Particle{})))
+      << "harness/wire_fields.h: a field of Particle is neither in forceInputs nor in "
+         "kNotForceInputs (or is in both)";
+}
+
 // The types inside requests and results: every member listed too.
 TEST(WireFields, EveryMemberOfEveryTypeInsideIsListed) {
   everyMemberListed<Particle>("Particle");
+  everyMemberListed<Spring>("Spring");  // the force channel's
   everyMemberListed<SpringData>("SpringData");
   everyMemberListed<HalfPlane>("HalfPlane");
   everyMemberListed<CircleObstacle>("CircleObstacle");
