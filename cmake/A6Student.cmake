@@ -2,7 +2,22 @@
 # can mix files (a submission with one file missing falls back to the starter's; a wrong
 # version replaces one file of the solution) without recompiling the others.
 
-set(A6_TASK_FILES spring forces time_stepping cloth particle_system joints implicit)
+# The task files, in task order, as the one table of the tasks lists them
+# (framework/harness/tasks.h, courseTasks(): its quoted "<name>.cpp" strings), without ".cpp";
+# A6_TASK_NUMBERS counts them (1 2 ... N).
+file(READ ${PROJECT_SOURCE_DIR}/framework/harness/tasks.h a6_tasks_h)
+string(REGEX MATCHALL "\"[a-z_]+\\.cpp\"" A6_TASK_FILES "${a6_tasks_h}")
+list(TRANSFORM A6_TASK_FILES REPLACE "^\"([a-z_]+)\\.cpp\"$" "\\1")
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+             ${PROJECT_SOURCE_DIR}/framework/harness/tasks.h)
+list(LENGTH A6_TASK_FILES a6_task_count)
+if(a6_task_count EQUAL 0)
+  message(FATAL_ERROR "framework/harness/tasks.h lists no task file")
+endif()
+set(A6_TASK_NUMBERS)
+foreach(task RANGE 1 ${a6_task_count})
+  list(APPEND A6_TASK_NUMBERS ${task})
+endforeach()
 set(A6_WARNINGS -Wall -Wextra)
 
 # a6_student_set(<name> <dir> [STARTER] [FALLBACK <set>])

@@ -507,6 +507,11 @@ check_limits() {
     "$(limit gradescope_time_budget)" "$(limit gradescope_time_budget)"
   fact $i "and stops \`a6_grade\` after %s s" "$(limit gradescope_time_limit)"
   fact $i "is limited to %s MiB of address space" "$(limit probe_memory)"
+  fact $i "at up to 60 step counts, within %s s)" "$(limit replay_time)"
+  fact $i "so with the default %s s limits" "$(limit check_time_limit)"
+  fact $i "(the %s MiB address-space limit)" "$(limit probe_memory)"
+  fact $i "outside (0, %s], missing" "$(limit max_check_time_limit)"
+  fact docs/handout.md "once the replays' %s s are spent" "$(limit replays_time)"
 }
 check_limits
 check_facts

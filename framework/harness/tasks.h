@@ -1,8 +1,9 @@
-// The assignment's tasks: the one table every stage asks for a task's number, file, functions,
-// checks and extra credit (the suite, the golden images, the grader's intake, build, checks,
-// report, rubric, batch and insights). No code reads a task from a name's characters: a suite, a
-// tag or a file is looked up here, whole. An eighth task is one more row of courseTasks()
-// (tests/grader/tasks_test.cpp runs the lookups on a table of eight).
+// The assignment's tasks: the one table every stage asks for a task's number, file, functions
+// and checks, and who sees them (the suite, the golden images, the grader's intake, build,
+// checks, report, rubric, batch and insights; CMake reads its files, cmake/A6Student.cmake).
+// No code reads a task from a name's characters: a suite, a tag or a file is looked up here,
+// whole. An eighth task is one more row of courseTasks() (tests/grader/tasks_test.cpp runs the
+// lookups on a table of eight). Points and extra credit are the rubric's (grader/rubric.toml).
 #pragma once
 
 #include <cstddef>
@@ -27,7 +28,6 @@ struct Task {
   std::string file;                    ///< the student's file (task 1's is spring.cpp)
   std::string topic;                   ///< the public suite's name after "Task<N>": "Spring"
   std::vector<std::string> functions;  ///< what the student writes in `file`
-  bool extraCredit = false;            ///< its points are extra credit
 };
 
 /// A suite name looked up: the task it belongs to (0: none) and its kind.
@@ -151,30 +151,28 @@ inline int TaskTable::ofTag(std::string_view tag) const {
   return 0;
 }
 
-// The course: tasks 1 to 6, then task 7 (extra credit). Its files are the starter's and the
-// solution's; the functions are those the handout asks for.
+// The course: tasks 1 to 7 (the rubric counts task 7 as extra credit). Its files are the
+// starter's and the solution's; the functions are those the handout asks for (each one is in its
+// file: tests/grader/tasks_test.cpp).
 inline const TaskTable& courseTasks() {
   static const TaskTable table({
-      {0, "spring.cpp", "Spring", {"Spring::computeForce"}, false},
+      {0, "spring.cpp", "Spring", {"Spring::computeForce"}},
       {0,
        "forces.cpp",
        "Forces",
-       {"gravityForce", "buoyancyForce", "dragForce", "repulsionForce", "externalForce"},
-       false},
+       {"gravityForce", "buoyancyForce", "dragForce", "repulsionForce", "externalForce"}},
       {0,
        "time_stepping.cpp",
        "TimeStepping",
-       {"MassSpringSystem::step", "MassSpringSystem::advance"},
-       false},
-      {0, "cloth.cpp", "Cloth", {"buildCloth"}, false},
-      {0, "particle_system.cpp", "Particles", {"emitParticle", "ParticleSystem::update"}, false},
+       {"MassSpringSystem::step", "MassSpringSystem::advance"}},
+      {0, "cloth.cpp", "Cloth", {"buildCloth"}},
+      {0, "particle_system.cpp", "Particles", {"emitParticle", "ParticleSystem::update"}},
       {0,
        "joints.cpp",
        "Joints",
        {"createHinge", "createRope", "createPiston", "createWheel", "beginDrag", "moveDrag",
-        "endDrag"},
-       false},
-      {0, "implicit.cpp", "Implicit", {"springJacobians", "MassSpringSystem::stepImplicit"}, true},
+        "endDrag"}},
+      {0, "implicit.cpp", "Implicit", {"springJacobians", "MassSpringSystem::stepImplicit"}},
   });
   return table;
 }

@@ -1,5 +1,5 @@
 # Grading a folder of submissions (batch/: a6_batch). It runs a6_grade per submission, so it
-# links none of the grading: a6_batch_core (layouts, outcomes, gradebook), a6_report's writes.
+# links none of the grading: a6_batch_core (layouts, outcomes, gradebook).
 find_package(CLI11 REQUIRED)
 
 add_library(a6_batch_core STATIC ${CMAKE_CURRENT_SOURCE_DIR}/batch/layouts.cpp
@@ -13,7 +13,7 @@ target_compile_options(a6_batch_core PRIVATE ${A6_WARNINGS})
 add_executable(a6_batch ${CMAKE_CURRENT_SOURCE_DIR}/batch/batch_main.cpp
                         ${CMAKE_CURRENT_SOURCE_DIR}/batch/command_line.cpp
                         ${CMAKE_CURRENT_SOURCE_DIR}/batch/progress.cpp)
-target_link_libraries(a6_batch PRIVATE a6_batch_core a6_insights_core a6_report a6_process
+target_link_libraries(a6_batch PRIVATE a6_batch_core a6_insights_core a6_process
                                        CLI11::CLI11)
 # The default rubric, as a6_grade reads it: part of every submission's fingerprint, so that a
 # changed rubric regrades.

@@ -74,8 +74,8 @@ struct Build {
   bool ok() const { return error.empty(); }
 };
 
-/// Limits for one compile or link: 60 s wall and CPU, 512 MiB address space, 64 MiB files,
-/// a few processes (the driver runs cc1plus, as, collect2, ld).
+/// Limits for one compile or link (common/limits.h: kCompileSeconds, kCompileMemoryBytes), 64 MiB
+/// files, a few processes (the driver runs cc1plus, as, collect2, ld).
 Limits defaultCompileLimits();
 
 /// Compiles each file of `intake` (sandboxed, `jobs` at a time, each seeing only the kit, its

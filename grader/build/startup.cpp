@@ -12,8 +12,6 @@ namespace fs = std::filesystem;
 namespace a6::grader {
 namespace {
 
-// How long a probe may take to reach main and answer a request that runs no student code, s.
-
 const char* const kBeforeMain =
     "Code that runs before main, such as the initializer of a global or static variable, must "
     "not exit, abort, crash or loop.";

@@ -38,6 +38,18 @@ namespace checks_models {
 
 namespace {
 
+// Runs `step`; its failure becomes a note for the report ("<what> failed: ..."), never silence.
+template <typename Step>
+void noting(const char* what, std::vector<std::string>& notes, Step step) {
+  try {
+    step();
+  } catch (const std::exception& e) {
+    notes.push_back(std::string(what) + " failed: " + e.what());
+  } catch (...) {
+    notes.push_back(std::string(what) + " failed: an error of no known kind");
+  }
+}
+
 constexpr std::size_t kProbeOutputCap = 64u << 10;  // what the report keeps of the probe's output
 
 // The student's code while the checks run (a6::test::student()): the budgeted probe, recorded.
@@ -317,23 +329,19 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
                          "each check's message): they earned nothing");
   }
   if (code != nullptr) {
-    try {
+    noting("counting the incidents", run.notes, [&] {
       if (probes != nullptr) collectIncidents(*probes, student, run);
-      // After the incidents are counted: the replays are feedback, never a check's. A student
-      // release has no reference replays, and so no replays.
+    });
+    // After the incidents are counted: the replays are feedback, never a check's. A student
+    // release has no reference replays, and so no replays.
+    noting("running the replays", run.notes, [&] {
       run.replayFolder = a6::test::replayFolder();
       if (in.replays && fs::is_directory(run.replayFolder)) {
         run.replays = runReplays(student, a6::test::imagedScenes());
         run.particleTrajectories =
             runParticleTrajectories(student, recorded.transcript(), failedChecks(run.tests));
       }
-    } catch (const std::exception& e) {
-      run.notes.push_back(
-          std::string("the incidents and replays after the checks were left out: ") + e.what());
-    } catch (...) {
-      run.notes.push_back(
-          "the incidents and replays after the checks were left out: an error of no known kind");
-    }
+    });
   }
   gStudent = nullptr;
   run.transcript = recorded.takeTranscript();

@@ -60,15 +60,23 @@ constexpr double maxGradingSeconds(double timeBudget) {
 }
 
 /// On Gradescope (run_autograder): the student's code gets this much over all checks, and
-/// a6_grade is stopped after the second figure, s. Gradescope ends a run after 600 s with a 0
-/// and no results; this leaves a minute for the container and the fallback results.json.
+/// a6_grade is stopped after the second figure, s: the build, a link's allowance, the checks and
+/// 20 s of the grader's own work there (seconds on Gradescope's idle machine). Gradescope ends a
+/// run after 600 s with a 0 and no results; this leaves a minute for the container and the
+/// fallback results.json.
 constexpr double kGradescopeTimeBudget = 360;
-constexpr double kGradescopeTimeLimit = 540;
+constexpr double kGradescopeTimeLimit =
+    kDefaultBuildBudget + kLinkAllowance + kGradescopeTimeBudget + 20;
+static_assert(kGradescopeTimeLimit + 60 <= 600, "Gradescope's default limit is 600 s");
 
 /// a6_batch: one grading may take this long before its process group is killed (--timeout), s.
 constexpr double kBatchTimeout = 900;
-/// a6_batch --similarity: sim_c++ on one task file, for the whole class, s.
+/// a6_batch --similarity: sim_c++ on one task file, for the whole class, s, and its address
+/// space, bytes.
 constexpr double kSimilaritySeconds = 120;
+constexpr std::size_t kSimilarityMemoryBytes = std::size_t{2} << 30;
+/// The most a rubric item's `time_limit` may be, s.
+constexpr double kMaxCheckTimeLimit = 600;
 
 // --- The list ------------------------------------------------------------------------------------
 
@@ -101,6 +109,8 @@ inline constexpr ListedLimit kLimits[] = {
     {"gradescope_time_limit", kGradescopeTimeLimit, "s", "run_autograder stops a6_grade after"},
     {"batch_timeout", kBatchTimeout, "s", "a6_batch's --timeout: one grading"},
     {"similarity_time", kSimilaritySeconds, "s", "sim_c++ on one task file for the class"},
+    {"similarity_memory", kSimilarityMemoryBytes / kMiB, "MiB", "sim_c++'s address space"},
+    {"max_check_time_limit", kMaxCheckTimeLimit, "s", "the most a rubric's time_limit may be"},
 };
 
 /// `seconds` as the help texts write it: "420".

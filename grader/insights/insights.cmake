@@ -9,7 +9,7 @@ a6_embedded_text(a6_insights_core insights_css
                  ${CMAKE_CURRENT_SOURCE_DIR}/insights/assets/insights.css)
 a6_embedded_text(a6_insights_core sort_tables_js
                  ${CMAKE_CURRENT_SOURCE_DIR}/insights/assets/sort_tables.js)
-target_link_libraries(a6_insights_core PUBLIC a6_batch_core a6_report a6_process a6_intake
+target_link_libraries(a6_insights_core PUBLIC a6_batch_core a6_process a6_intake
                       PRIVATE nlohmann_json::nlohmann_json)
 target_compile_options(a6_insights_core PRIVATE ${A6_WARNINGS})
 

@@ -80,7 +80,7 @@ bool runTool(std::vector<std::string> args, const fs::path& out, const StopAsked
     // The files are the students': the tool gets bounded time, memory and output.
     const rlimit cpu{static_cast<rlim_t>(kSimilaritySeconds),
                      static_cast<rlim_t>(kSimilaritySeconds)};
-    const rlimit memory{rlim_t(2) << 30, rlim_t(2) << 30},
+    const rlimit memory{kSimilarityMemoryBytes, kSimilarityMemoryBytes},
         output{rlim_t(64) << 20, rlim_t(64) << 20};
     setrlimit(RLIMIT_CPU, &cpu);
     setrlimit(RLIMIT_AS, &memory);

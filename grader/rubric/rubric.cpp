@@ -174,8 +174,9 @@ class Checker {
   }
   bool timeLimit(const toml::node& node, const std::string& where, double& out) {
     if (!number(node, where, out)) return false;
-    if (out > 0 && out <= 600) return true;
-    error(lineOf(node), where + " must be more than 0 and at most 600 seconds");
+    if (out > 0 && out <= kMaxCheckTimeLimit) return true;
+    error(lineOf(node), where + " must be more than 0 and at most " +
+                            secondsText(kMaxCheckTimeLimit) + " seconds");
     return false;
   }
 
@@ -395,8 +396,19 @@ Rubric loadRubric(const std::filesystem::path& file) {
 bool RubricItem::onHiddenChecks() const {
   if (tests.empty()) return false;
   for (const std::string& glob : tests) {
-    const SuiteOwner owner = courseTasks().ofSuite(glob.substr(0, glob.find('.')));
-    if (owner.task == 0 || !isHidden(owner.kind)) return false;
+    // Every suite of the tasks' table that the glob's suite part can match is a hidden one
+    // ("Task*Hidden.*" too), and it matches one at least.
+    const std::string suitePart = glob.substr(0, glob.find('.'));
+    int matched = 0;
+    for (const Task& task : courseTasks().all()) {
+      for (SuiteKind kind :
+           {SuiteKind::Public, SuiteKind::Hidden, SuiteKind::Golden, SuiteKind::GoldenHidden}) {
+        if (!globMatch(suitePart, courseTasks().suite(task.number, kind))) continue;
+        if (!isHidden(kind)) return false;
+        ++matched;
+      }
+    }
+    if (matched == 0) return false;
   }
   return true;
 }

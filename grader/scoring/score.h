@@ -50,6 +50,7 @@ struct Scores {
 /// Scores `tests` with `rubric` (the items' tests point into `tests`, which must outlive them).
 /// Deterministic: the same tests and rubric give the same numbers.
 Scores scoreTests(const std::vector<TestOutcome>& tests, const Rubric& rubric);
+Scores scoreTests(std::vector<TestOutcome>&& tests, const Rubric& rubric) = delete;  // dangling
 
 /// Points rounded as every score is: to 1e-4.
 double roundPoints(double points);

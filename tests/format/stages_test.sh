@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The grader's stages talk down, never up (grader/DESIGN.md): a file of grader/ includes only its
-# own folder's files, those of the folders ranked below its own, and the framework's. A command's
-# main (grader/main.cpp, grader/*/*_main.cpp) sits above every stage. Outside grader/ and
+# own folder's files, those of the folders ranked below its own, and the framework's. The commands'
+# mains (MAINS) sit above every stage. Outside grader/ and
 # framework/, only the checks stage may include (it runs the physics suite in this process:
 # tests/support/, tests/golden/); KNOWN_OUTSIDE names what else still does, and why, and must
 # only shrink. Read from the #include lines of the committed files; nothing is compiled.
@@ -14,6 +14,9 @@ cd "$1" || exit 1
 # The folders of grader/, lowest first: each may include those before it.
 RANKS=(common sandbox probe rubric intake build checks mistakes replay scoring report grading
   batch insights)
+# The programs' mains: each may include any stage.
+MAINS=(grader/main.cpp grader/batch/batch_main.cpp grader/insights/insights_main.cpp
+  grader/probe/probe_main.cpp grader/sandbox/keeper_main.cpp)
 # Includes from outside grader/ and framework/ that are not the checks stage's, with the reason.
 KNOWN_OUTSIDE=(
   "grader/mistakes/library/steppers.cpp reference_models.inc" # the reference forces' one home
@@ -26,24 +29,33 @@ rank_of() {
   echo -1
 }
 
-# FILE -> its folder's rank; a command's main ranks above every stage.
+# FILE -> its folder's rank; a program's main ranks above every stage.
 file_rank() {
-  case "$1" in
-    grader/main.cpp | grader/*/*_main.cpp) echo 99 ;;
-    *) rank_of "$(cut -d/ -f2 <<<"$1")" ;;
-  esac
+  if printf '%s\n' "${MAINS[@]}" | grep -qxF -- "$1"; then
+    echo 99
+  else
+    rank_of "$(cut -d/ -f2 <<<"$1")"
+  fi
 }
 
-# FILE INCLUDE -> where the include is found: "same", "grader FOLDER", "framework" or "outside".
+# FILE INCLUDE -> where the include is found: "grader FOLDER", "framework", "system" (an
+# <include> found in neither) or "outside".
 resolve() {
-  local dir
+  local dir found
   dir=$(dirname "$1")
-  if [ -f "$dir/$2" ]; then
-    echo same
+  if [ -f "$dir/$2" ]; then  # beside the file, or reached by a relative path ("../report/...")
+    found=$(realpath -m --relative-to=. "$dir/$2")
+    case "$found" in
+      grader/*/*) echo "grader $(cut -d/ -f2 <<<"$found")" ;;
+      framework/*) echo framework ;;
+      *) echo outside ;;
+    esac
   elif [ -f "grader/$2" ]; then
     echo "grader $(cut -d/ -f1 <<<"$2")"
   elif [ -f "framework/$2" ] || [ -f "framework/include/$2" ]; then
     echo framework
+  elif [ "${3:-}" = angle ]; then
+    echo system
   else
     echo outside
   fi
@@ -54,7 +66,7 @@ problem_of() {
   local file=$1 include=$2 mine theirs where folder
   mine=$(file_rank "$file")
   [ "$mine" -ge 0 ] || { echo "$file: its folder has no rank (add it to RANKS and DESIGN.md)"; return; }
-  read -r where folder <<<"$(resolve "$file" "$include")"
+  read -r where folder <<<"$(resolve "$file" "$include" "${3:-}")"
   case "$where" in
     grader)
       theirs=$(rank_of "$folder")
@@ -74,17 +86,22 @@ problem_of() {
 
 # The measure itself: an include up and one from tests/ must be found, one down must not.
 [ -n "$(problem_of grader/rubric/rubric.cpp checks/checks.h)" ] &&
+  [ -n "$(problem_of grader/rubric/rubric.cpp ../checks/checks.h)" ] &&
+  [ -n "$(problem_of grader/rubric/rubric.cpp checks/checks.h angle)" ] &&
   [ -n "$(problem_of grader/report/report.cpp suite.h)" ] &&
-  [ -z "$(problem_of grader/report/report.cpp checks/outcome.h)" ] ||
+  [ -n "$(problem_of grader/batch/batch.cpp ../insights/page.h)" ] &&
+  [ -z "$(problem_of grader/report/report.cpp checks/outcome.h)" ] &&
+  [ -z "$(problem_of grader/report/report.cpp vector angle)" ] ||
   { echo "FAIL: the measure is broken (an include up or from tests/ went unseen)"; exit 1; }
 
 problems=() checked=0
 while IFS= read -r file; do
-  while IFS= read -r include; do
+  while read -r include kind; do
     checked=$((checked + 1))
-    problem=$(problem_of "$file" "$include")
+    problem=$(problem_of "$file" "$include" "$kind")
     [ -z "$problem" ] || problems+=("$problem")
-  done < <(sed -n 's/^#include "\([^"]*\)".*/\1/p' "$file")
+  done < <(sed -n -e 's/^[ \t]*#[ \t]*include[ \t]*"\([^"]*\)".*/\1 quoted/p' \
+                  -e 's/^[ \t]*#[ \t]*include[ \t]*<\([^>]*\)>.*/\1 angle/p' "$file")
 done < <(git ls-files -- 'grader/*.cpp' 'grader/*.h' 'grader/*.inc')
 
 if [ "$checked" -eq 0 ]; then

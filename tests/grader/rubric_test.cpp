@@ -304,6 +304,12 @@ TEST(PublicRubric, AnItemIsOnHiddenChecksOnlyWhenAllItsSuitesAre) {
   EXPECT_FALSE(item.onHiddenChecks());
   item.tests = {"GoldenTask6.*"};
   EXPECT_FALSE(item.onHiddenChecks());
+  item.tests = {"Task*Hidden.*", "GoldenTask?Hidden.*"};
+  EXPECT_TRUE(item.onHiddenChecks()) << "a wildcard suite that matches hidden suites only";
+  item.tests = {"Task1*.*"};
+  EXPECT_FALSE(item.onHiddenChecks()) << "Task1Spring and Task1Hidden";
+  item.tests = {"NoSuchSuite*.*"};
+  EXPECT_FALSE(item.onHiddenChecks());
   item.tests = {};
   EXPECT_FALSE(item.onHiddenChecks());
 }
@@ -345,6 +351,9 @@ TEST(DefaultRubric, CountsEveryCheckTheGraderRunsExactlyOnce) {
   std::set<std::string> seen;
   for (const std::string& name : graded) {
     EXPECT_TRUE(seen.insert(name).second) << name << " is listed twice";
+    EXPECT_NE(courseTasks().ofCheck(name), 0)
+        << name << ": its suite is no task's (framework/harness/tasks.h: Task<N><Topic>, "
+        << "Task<N>Hidden, GoldenTask<N>, GoldenTask<N>Hidden)";
     const int item = r.itemFor(name);
     ASSERT_GE(item, 0) << name << " is matched by no rubric item";
     ++perItem[static_cast<std::size_t>(item)];

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -19,7 +21,7 @@ namespace {
 // The course's tasks and an eighth.
 TaskTable eightTasks() {
   std::vector<Task> tasks = courseTasks().all();
-  tasks.push_back({0, "rope.cpp", "Rope", {"buildRope"}, false});
+  tasks.push_back({0, "rope.cpp", "Rope", {"buildRope"}});
   return TaskTable(tasks);
 }
 
@@ -87,6 +89,22 @@ TEST(TaskTable, TheGradebookHasAColumnPerTaskOfTheTable) {
   EXPECT_NE(csv.find(",12.5,"), std::string::npos) << csv;
   const std::string seven = grader::batch::gradebookCsv({{&s, &o}});
   EXPECT_EQ(seven.find("task8"), std::string::npos) << seven;
+}
+
+// The table's functions are the ones the starter asks for and the solution writes, in its file.
+TEST(TaskTable, EachFunctionIsInItsTasksFile) {
+  for (const Task& t : courseTasks().all()) {
+    for (const char* tree : {"starter", "solution"}) {
+      std::ifstream in(std::string(A6_SOURCE_DIR) + "/" + tree + "/" + t.file);
+      const std::string text((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
+      ASSERT_FALSE(text.empty()) << tree << "/" << t.file;
+      for (const std::string& f : t.functions) {
+        EXPECT_NE(text.find(" " + f + "("), std::string::npos)
+            << f << " in " << tree << "/" << t.file;
+      }
+    }
+  }
 }
 
 TEST(TaskTable, InsightsFindTheEighthTasksChecks) {
