@@ -137,19 +137,31 @@ struct Unflatten {
   }
 };
 
-Vec2 springForce(const double* in, const ForceModel& models) {
+// The force on the spring at `in` (kSpringWidth doubles), appended to `out`; false when the
+// doubles are no spring (an unknown type).
+bool springForce(const double* in, const ForceModel& models, std::vector<Vec2>& out) {
   Particle p1, p2;
   Spring s{&p1, &p2};
   Unflatten read{in, in + kSpringWidth};
   wire::fields(read, s);
-  return models.spring && read.ok ? models.spring(s) : notAvailable();
+  out.push_back(models.spring && read.ok ? models.spring(s) : notAvailable());
+  return read.ok;
 }
 
-Vec2 externalForce(const double* in, const Environment& env, const ForceModel& models) {
+// The external force on the particle at `in` (kParticleWidth doubles), appended to `out`.
+bool externalForce(const double* in, const Environment& env, const ForceModel& models,
+                   std::vector<Vec2>& out) {
   Particle p;
   Unflatten read{in, in + kParticleWidth};
   wire::forceInputs(read, p);
-  return models.external && read.ok ? models.external(p, env) : notAvailable();
+  out.push_back(models.external && read.ok ? models.external(p, env) : notAvailable());
+  return read.ok;
+}
+
+// Each external force looks at every obstacle: the grader's work for one batch is bounded (the
+// probe asks a larger batch one force at a time).
+bool withinWork(std::size_t count, const Environment& env) {
+  return count * (1 + env.planes.size() + env.circles.size()) <= kMaxRequestDoubles;
 }
 
 // The environment at r[from, end): its length in doubles, or 0 when malformed.
@@ -166,23 +178,23 @@ bool answer(const std::vector<double>& r, const ForceModel& models, std::vector<
   out.clear();
   const double kind = r[0];
   if (kind == kSpring) {
-    if (r.size() != 1 + kSpringWidth) return false;
-    out.push_back(springForce(r.data() + 1, models));
-    return true;
+    return r.size() == 1 + kSpringWidth && springForce(r.data() + 1, models, out);
   }
   if (kind == kExternal) {
     Environment env;
     const std::size_t length = readEnvironment(r, 1 + kParticleWidth, env);
     if (length == 0 || r.size() != 1 + kParticleWidth + length) return false;
-    out.push_back(externalForce(r.data() + 1, env, models));
-    return true;
+    return externalForce(r.data() + 1, env, models, out);
   }
-  if (r.size() < 2 || !(r[1] >= 0 && r[1] <= static_cast<double>(kMaxRequestDoubles))) return false;
+  if (r.size() < 2 || !(r[1] >= 0 && r[1] <= static_cast<double>(kMaxRequestDoubles)) ||
+      r[1] != std::floor(r[1])) {
+    return false;
+  }
   const auto count = static_cast<std::size_t>(r[1]);
   if (kind == kSprings) {
     if (r.size() != 2 + count * kSpringWidth) return false;
     for (std::size_t i = 0; i < count; ++i) {
-      out.push_back(springForce(r.data() + 2 + i * kSpringWidth, models));
+      if (!springForce(r.data() + 2 + i * kSpringWidth, models, out)) return false;
     }
     return true;
   }
@@ -190,10 +202,10 @@ bool answer(const std::vector<double>& r, const ForceModel& models, std::vector<
     Environment env;
     const std::size_t length = readEnvironment(r, 2, env);
     if (length == 0 || r.size() != 2 + length + count * kParticleWidth) return false;
-    // Each force looks at every obstacle: bound the grader's work for one request.
-    if (count * (1 + env.planes.size() + env.circles.size()) > kMaxRequestDoubles) return false;
+    if (!withinWork(count, env)) return false;
     for (std::size_t i = 0; i < count; ++i) {
-      out.push_back(externalForce(r.data() + 2 + length + i * kParticleWidth, env, models));
+      if (!externalForce(r.data() + 2 + length + i * kParticleWidth, env, models, out))
+        return false;
     }
     return true;
   }
@@ -284,6 +296,7 @@ class Remote {
 
   Vec2 externalAmong(const Particle& p, const ParticlesView& all, const Environment& env) {
     if (env.planes.size() + env.circles.size() > kMaxObstacles) return notAvailable();
+    if (!withinWork(all.count, env)) return external(p, env);  // too large a batch: alone
     key_.clear();
     putParticle(key_, p);
     const std::string key = bytesOf(key_.data(), key_.size());

@@ -18,8 +18,11 @@
 //   3, count, count springs            -> their forces (2 count doubles)
 //   4, count, environment, count particles -> their external forces
 // The batches make a stepper cheap: all of a state's forces in one round trip
-// (ForceModel::springAmong, externalAmong). A malformed request ends the serving: the probe's
-// next force fails, and only its own checks suffer.
+// (ForceModel::springAmong, externalAmong); a batch of externals whose count times (1 + its
+// obstacles) passes kMaxRequestDoubles is the grader's work bound, so the probe asks those forces
+// one at a time. A malformed request (a count that is no whole number, a list longer than what
+// follows, a spring type that is none, more than kMaxObstacles obstacles, a batch past the work
+// bound) ends the serving: the probe's next force fails, and only its own checks suffer.
 #pragma once
 
 #include <atomic>

@@ -163,6 +163,8 @@ TEST(ForceChannel, AMalformedRequestEndsTheServing) {
       {3, 2, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1},                    // two springs, one sent
       {3, 1e18},                                                  // a batch beyond any limit
       {4, 1, 0, -9.81, 293, 0, 0, 0, 0, 0},                       // a particle announced, none
+      {3, 1.5, 0, 0, 0, 0, 1, 300, 1, 0, 0, 0, 1, 300, 0.25, 100, 0.5, 0},  // a count not whole
+      {1, 0, 0, 0, 0, 1, 300, 1, 0, 0, 0, 1, 300, 0.25, 100, 0.5, 7},       // a spring type unknown
   };
   // Forces enough, against obstacles enough, to keep the grader busy for seconds: refused.
   std::vector<double> busy = {4, 2048, 0, -9.81, 293, 0, 0, 0, 1024};
@@ -208,6 +210,27 @@ TEST(ForceChannel, WithTheGraderGoneAForceIsNaNNotACrash) {
   EXPECT_TRUE(remote.externalAmong(chain.particles[0], chain.view(), environment()).hasNaN());
   ::close(requests[1]);
   ::close(answers[0]);
+}
+
+// A batch past the grader's work bound (particles times obstacles) is asked one force at a time:
+// every force is the model's, none NaN.
+TEST(ForceChannel, ABatchPastTheWorkBoundIsAskedOneForceAtATime) {
+  Channel channel;
+  channel.serve(referenceForceModel());
+  a6::Environment env = environment();
+  env.planes.resize(fc::kMaxObstacles - 1, env.planes[0]);
+  std::vector<a6::Particle> many(2100);
+  for (std::size_t i = 0; i < many.size(); ++i) many[i].x = Vec2(0.001 * i, 0.01);
+  const a6::ParticlesView view{many.size(),
+                               [&](std::size_t i) -> const a6::Particle& { return many[i]; }};
+  const a6::ForceModel remote = channel.remote();
+  for (std::size_t i : {std::size_t{0}, std::size_t{1}, many.size() - 1}) {
+    EXPECT_TRUE(
+        same(remote.externalAmong(many[i], view, env), referenceExternalForce(many[i], env)))
+        << i;
+  }
+  channel.stop();
+  EXPECT_EQ(channel.answered(), std::optional<std::size_t>(3)) << "three forces asked alone";
 }
 
 TEST(ForceChannel, AnEnvironmentOverTheLimitIsNaNWithoutAsking) {
