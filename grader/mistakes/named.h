@@ -7,7 +7,7 @@ namespace a6::grader {
 
 struct NamedMistake {
   std::string id;    ///< the wrong version it was written from: "t1_damping_full_relative_velocity"
-  int task = 0;      ///< 1..6
+  int task = 0;      ///< its task (harness/tasks.h)
   std::string text;  ///< one sentence for the student: what the code does, and the fix
   int evidence = 0;  ///< how many of the public checks' requests it matched where it differs
 };
