@@ -31,6 +31,11 @@ Vec2 notAvailable() { return Vec2::Constant(std::numeric_limits<double>::quiet_N
 
 // ---- encoding (the probe's side): the field lists of harness/wire_fields.h, as doubles ----------
 
+template <typename T>
+struct IsVector : std::false_type {};
+template <typename T>
+struct IsVector<std::vector<T>> : std::true_type {};
+
 // Appends each field it visits: a number as itself, a vector as its two components, an enum by
 // its value, a list as its length and then its items, a spring's particle by its force inputs.
 struct Flatten {
@@ -48,17 +53,13 @@ struct Flatten {
     } else if constexpr (std::is_same_v<T, Particle*>) {
       Particle none;  // a spring without its particle: zeros (the student's own bug)
       wire::forceInputs(*this, x != nullptr ? *x : none);
-    } else if constexpr (isVector<T>::value) {
+    } else if constexpr (IsVector<T>::value) {
       out.push_back(static_cast<double>(x.size()));
       for (auto& item : x) wire::fields(*this, item);
     } else {
       wire::fields(*this, x);
     }
   }
-  template <typename T>
-  struct isVector : std::false_type {};
-  template <typename T>
-  struct isVector<std::vector<T>> : std::true_type {};
 };
 
 void putSpring(std::vector<double>& out, const Spring& s) {
@@ -119,11 +120,13 @@ struct Unflatten {
       }
     } else if constexpr (std::is_same_v<T, bool>) {
       if (take(1)) x = *at++ != 0;
-    } else if constexpr (std::is_arithmetic_v<T>) {
+    } else if constexpr (std::is_floating_point_v<T>) {
+      // (No integer field is sent: one would need a range check before its conversion, and
+      // until it has one it does not compile, falling to fields() below.)
       if (take(1)) x = static_cast<T>(*at++);
     } else if constexpr (std::is_same_v<T, Particle*>) {
       if (x != nullptr) wire::forceInputs(*this, *x);
-    } else if constexpr (Flatten::isVector<T>::value) {
+    } else if constexpr (IsVector<T>::value) {
       if (!take(1)) return;
       // Each item takes a double at least: no list outgrows the request it came in.
       const double n = *at++;

@@ -36,6 +36,20 @@ struct SuiteOwner {
   SuiteKind kind = SuiteKind::Public;
 };
 
+/// Every kind, in the order a task's suites are listed.
+inline constexpr SuiteKind kSuiteKinds[] = {SuiteKind::Public, SuiteKind::Hidden, SuiteKind::Golden,
+                                            SuiteKind::GoldenHidden};
+
+/// Whether `kind`'s checks are physics checks (run on the student's functions), not images.
+inline bool isPhysics(SuiteKind kind) {
+  return kind == SuiteKind::Public || kind == SuiteKind::Hidden;
+}
+
+/// Whether `kind`'s checks are the grader's only (not in the student release).
+inline bool isHidden(SuiteKind kind) {
+  return kind == SuiteKind::Hidden || kind == SuiteKind::GoldenHidden;
+}
+
 /// The tasks, numbered 1 to count() in order.
 class TaskTable {
  public:
@@ -55,10 +69,14 @@ class TaskTable {
 
   /// The name of task `number`'s suite of kind `kind` ("Task3TimeStepping", "GoldenTask3Hidden").
   std::string suite(int number, SuiteKind kind) const;
+  /// Every task's suites, by name, in task order.
+  const std::vector<std::pair<std::string, SuiteOwner>>& suites() const { return suites_; }
   /// Whose suite `suite` is, compared whole against every task's suites; task 0 for none.
   SuiteOwner ofSuite(std::string_view suite) const;
-  /// The task of a check "Suite.Name" (or a rubric glob whose suite is whole); 0 for none.
-  int ofCheck(std::string_view check) const;
+  /// Whose suite a check "Suite.Name" (or a rubric glob whose suite is whole) is in.
+  SuiteOwner ownerOfCheck(std::string_view check) const;
+  /// The task of a check; 0 for none.
+  int ofCheck(std::string_view check) const { return ownerOfCheck(check).task; }
   /// Whether `check` is a physics check (public or hidden, not an image) of the task of `file`.
   bool isPhysicsCheckOf(std::string_view check, std::string_view file) const;
 
@@ -69,6 +87,7 @@ class TaskTable {
 
  private:
   std::vector<Task> tasks_;
+  std::vector<std::pair<std::string, SuiteOwner>> suites_;
 };
 
 /// This course's tasks.
@@ -79,6 +98,9 @@ const TaskTable& courseTasks();
 
 inline TaskTable::TaskTable(std::vector<Task> tasks) : tasks_(std::move(tasks)) {
   for (std::size_t i = 0; i < tasks_.size(); ++i) tasks_[i].number = static_cast<int>(i + 1);
+  for (const Task& t : tasks_) {
+    for (SuiteKind kind : kSuiteKinds) suites_.push_back({suite(t.number, kind), {t.number, kind}});
+  }
 }
 
 inline const Task* TaskTable::find(int number) const {
@@ -121,23 +143,19 @@ inline std::string TaskTable::suite(int number, SuiteKind kind) const {
 }
 
 inline SuiteOwner TaskTable::ofSuite(std::string_view suite) const {
-  for (const Task& t : tasks_) {
-    for (SuiteKind kind :
-         {SuiteKind::Public, SuiteKind::Hidden, SuiteKind::Golden, SuiteKind::GoldenHidden}) {
-      if (this->suite(t.number, kind) == suite) return {t.number, kind};
-    }
+  for (const auto& [name, owner] : suites_) {
+    if (name == suite) return owner;
   }
   return {};
 }
 
-inline int TaskTable::ofCheck(std::string_view check) const {
-  return ofSuite(check.substr(0, check.find('.'))).task;
+inline SuiteOwner TaskTable::ownerOfCheck(std::string_view check) const {
+  return ofSuite(check.substr(0, check.find('.')));
 }
 
 inline bool TaskTable::isPhysicsCheckOf(std::string_view check, std::string_view file) const {
-  const SuiteOwner owner = ofSuite(check.substr(0, check.find('.')));
-  const bool physics = owner.kind == SuiteKind::Public || owner.kind == SuiteKind::Hidden;
-  return owner.task != 0 && owner.task == ofFile(file) && physics;
+  const SuiteOwner owner = ownerOfCheck(check);
+  return owner.task != 0 && owner.task == ofFile(file) && isPhysics(owner.kind);
 }
 
 inline std::string TaskTable::tag(int number) const {
@@ -179,15 +197,5 @@ inline const TaskTable& courseTasks() {
 
 /// The course's task files, in task order (courseTasks().files(), for the loops over them).
 inline const std::vector<std::string> kTaskFiles = courseTasks().files();
-
-/// Whether `kind`'s checks are physics checks (run on the student's functions), not images.
-inline bool isPhysics(SuiteKind kind) {
-  return kind == SuiteKind::Public || kind == SuiteKind::Hidden;
-}
-
-/// Whether `kind`'s checks are the grader's only (not in the student release).
-inline bool isHidden(SuiteKind kind) {
-  return kind == SuiteKind::Hidden || kind == SuiteKind::GoldenHidden;
-}
 
 }  // namespace a6

@@ -371,7 +371,7 @@ void Grading::endWhatWasLeftRunning() {
 void Grading::nameMistakes() {
   std::set<int> failing;
   for (const TestOutcome& t : report_.tests) {
-    const SuiteOwner owner = courseTasks().ofSuite(t.name.substr(0, t.name.find('.')));
+    const SuiteOwner owner = courseTasks().ownerOfCheck(t.name);
     if (!t.passed && owner.task > 0 && isPhysics(owner.kind)) failing.insert(owner.task);
   }
   try {

@@ -400,13 +400,10 @@ bool RubricItem::onHiddenChecks() const {
     // ("Task*Hidden.*" too), and it matches one at least.
     const std::string suitePart = glob.substr(0, glob.find('.'));
     int matched = 0;
-    for (const Task& task : courseTasks().all()) {
-      for (SuiteKind kind :
-           {SuiteKind::Public, SuiteKind::Hidden, SuiteKind::Golden, SuiteKind::GoldenHidden}) {
-        if (!globMatch(suitePart, courseTasks().suite(task.number, kind))) continue;
-        if (!isHidden(kind)) return false;
-        ++matched;
-      }
+    for (const auto& [suite, owner] : courseTasks().suites()) {
+      if (!globMatch(suitePart, suite)) continue;
+      if (!isHidden(owner.kind)) return false;
+      ++matched;
     }
     if (matched == 0) return false;
   }

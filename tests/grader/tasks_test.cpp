@@ -39,9 +39,7 @@ TEST(TaskTable, NumbersItsRowsInOrder) {
 TEST(TaskTable, FindsEachSuiteOfTheEighthTaskWhole) {
   const TaskTable eight = eightTasks();
   EXPECT_EQ(eight.suite(8, SuiteKind::Public), "Task8Rope");
-  const SuiteKind kinds[] = {SuiteKind::Public, SuiteKind::Hidden, SuiteKind::Golden,
-                             SuiteKind::GoldenHidden};
-  for (SuiteKind kind : kinds) {
+  for (SuiteKind kind : kSuiteKinds) {
     const SuiteOwner owner = eight.ofSuite(eight.suite(8, kind));
     EXPECT_EQ(owner.task, 8) << eight.suite(8, kind);
     EXPECT_EQ(owner.kind, kind) << eight.suite(8, kind);
