@@ -26,8 +26,7 @@ target_include_directories(a6_grading PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_grading PUBLIC a6_suite a6_golden_checks a6_report a6_rubric a6_intake
                                         a6_build a6_probe_client a6_mistakes
                                         a6_replay_view GTest::gtest)
-# The reference force models the probe of tasks 3 and 5 asks for (they stay in a6_grade).
-target_include_directories(a6_grading PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+# The reference force models the probe of tasks 3, 5 and 7 asks for (they stay in a6_grade).
 target_compile_definitions(a6_grading PRIVATE A6_FORCE_MODELS="${A6_FORCE_MODELS}")
 target_compile_options(a6_grading PRIVATE ${A6_WARNINGS})
 

@@ -50,7 +50,7 @@ alice_graded() {
   [ -f "$scratch/graded/alice/results.json" ] && return 0
   mkdir -p "$scratch/submissions/alice"
   cp solution/*.cpp "$scratch/submissions/alice/"
-  cp tests/wrong/t1_wrong_sign/spring.cpp "$scratch/submissions/alice/"
+  cp "$build/variants/wrong/t1_wrong_sign/spring.cpp" "$scratch/submissions/alice/"
   printf '\nint unfinished = ;\n' >>"$scratch/submissions/alice/cloth.cpp"
   (cd "$scratch" && "$grade" submissions/alice --out graded/alice --seed 7 --quiet >alice.out 2>&1)
 }

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # What the grader gives every submission we keep, in one folder, to compare a change of the
 # grader's code against: results.json of the solution, the starter, every wrong version
-# (tests/wrong), every correct alternative (tests/alternative) and every hostile submission
-# (tests/grader/submissions), graded with one seed, less what changes from run to run (times,
-# memory). Two folders compare with `diff -r`; nothing should differ after a refactoring.
+# (tests/wrong) and every correct alternative (tests/alternative), as the build applied their
+# patches, and every hostile submission (tests/grader/submissions), graded with one seed, less
+# what changes from run to run (times, memory). Two folders compare with `diff -r`; nothing should differ after a refactoring.
 #
 #   scripts/grader-baseline.sh OUT_DIR [BUILD_DIR]     (BUILD_DIR default: build)
 #
@@ -17,12 +17,13 @@ grade="$build/grader/a6_grade"
 [ -x "$grade" ] || { echo "grader-baseline: no $grade (cmake --build $build --target a6_grade)" >&2; exit 2; }
 mkdir -p "$out"
 cases=("$root/solution" "$root/starter")
-for d in "$root"/tests/wrong/*/ "$root"/tests/alternative/*/ "$root"/tests/grader/submissions/*/; do
+# The wrong versions and alternatives as the build applied their patches (cmake/A6Variants.cmake).
+for d in "$build"/variants/wrong/*/ "$build"/variants/alternative/*/ "$root"/tests/grader/submissions/*/; do
   cases+=("${d%/}")
 done
 start=$(date +%s)
 for c in "${cases[@]}"; do
-  name=$(realpath --relative-to="$root" "$c" | tr '/' '_')
+  name=$(realpath --relative-to="$root" "$c" | sed -E "s|^.*variants/|tests/|" | tr '/' '_')
   work=$(mktemp -d)
   chmod 755 "$work"
   "$grade" "$c" --out "$work/r" --seed 12345 --time-budget "${A6_BASELINE_BUDGET:-20}" --quiet \

@@ -8,11 +8,11 @@
 # `git ls-files` (tracked files, and untracked ones git does not ignore: never a build folder).
 #
 # Left out: what grading does not need, and what must not travel. The autograder grades with the
-# rubric, the reference force models and the reference images; it never needs solution/, so the
+# rubric, the reference physics and the reference images; it never needs solution/, so the
 # zip does not carry it (nor the wrong versions and the alternative solution, which are the
 # solution with one file changed, nor the grader's own tests, which use the solution). Kept: the
 # autograder's secrets, tests/hidden/, tests/golden/ (hidden goldens included) and
-# tests/support/reference_models.inc: they are what it grades with.
+# grader/reference/: they are what it grades with.
 set -euo pipefail
 
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -30,6 +30,7 @@ excluded=(
   tests/wrong/        # the solution with a mistake in one file
   tests/alternative/  # a second complete solution
   tests/grader/       # the grader's own tests: they grade the solution
+  tests/reference/    # the reference physics against the solution and the texts
   tests/bench/        # benchmarks (of the solution)
   tests/render/       # the renderer's, the scenes' and the viewer's tests
   tests/scenes/

@@ -26,6 +26,7 @@ echo "install-deps: $os_name"
 packages=(
   # toolchain
   g++ cmake ninja-build pkg-config git
+  patch              # the wrong versions and alternatives are patches of the solution (cmake/A6Variants.cmake)
   ccache mold        # faster rebuilds (cmake/A6FastBuild.cmake): used when present, never required
   # libraries (found with find_package / pkg-config)
   libeigen3-dev      # Eigen 3.4

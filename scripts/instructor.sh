@@ -18,6 +18,10 @@
 #       after changing the rubric (default grader/rubric.toml): checks it against every check
 #       (each problem with its line and the fix, before anything runs), then grades the
 #       solution and the starter with it: full marks and nothing.
+#   scripts/instructor.sh variant wrong/NAME|alternative/NAME FILE...
+#       keeps whole task files (the solution's, with one mistake, or written another way) as the
+#       change they make: tests/<kind>/NAME/<file>.cpp.patch, a diff against solution/<file>.cpp
+#       that the build applies (cmake/A6Variants.cmake); then builds the variant's file set.
 #
 # Each job that changes what the docs quote (the rubric's numbers, the checks, the images) ends by
 # rewriting the docs' generated examples and counts (scripts/docs-examples.sh --update), and
@@ -342,6 +346,34 @@ job_rubric() {
   return "$status"
 }
 
+# variant KIND/NAME FILE...: each FILE kept as its patch of the solution.
+job_variant() {
+  local where="${1:-}" f name kind patch
+  case "$where" in wrong/?* | alternative/?*) shift ;; *) usage ;; esac
+  [ $# -ge 1 ] || usage
+  kind="${where%%/*}" name="${where#*/}"
+  mkdir -p "tests/$where"
+  for f in "$@"; do
+    [ -f "solution/$(basename "$f")" ] || { echo "instructor: $f is no task file"; return 2; }
+    patch="tests/$where/$(basename "$f").patch"
+    if diff -u --label "solution/$(basename "$f")" --label "tests/$where/$(basename "$f")" \
+      "solution/$(basename "$f")" "$f" >"$patch"; then
+      rm -f "$patch"
+      echo "instructor: $f is the solution's text: nothing to keep"
+      return 1
+    fi
+    echo "kept: $patch ($(grep -c '^[-+][^-+]' "$patch") lines changed)"
+    [ "$(dirname "$f")" -ef "tests/$where" ] && rm -f "$f"  # the whole file: its patch now
+  done
+  if [ "$kind" = wrong ] && [ ! -f "tests/$where/EXPECT" ]; then
+    echo "next: write tests/$where/EXPECT (fail: <task>, and mistake: <id> if the library names it)"
+    return 0
+  fi
+  local set="${kind/alternative/alt}_$name"
+  rebuild "a6_graded_$set" a6_scores_test || return 1  # its one grading (tests/grader/)
+  echo "next: ctest --test-dir $build -R '^${kind}_$name\$' grades it"
+}
+
 [ $# -ge 1 ] || usage
 job="$1"
 shift
@@ -349,6 +381,7 @@ case "$job" in
   rerender) job_rerender "$@" ;;
   hidden-check) job_hidden_check "$@" ;;
   rubric) job_rubric "$@" ;;
+  variant) job_variant "$@" ;;
   -h | --help) usage ;;
   *) usage ;;
 esac

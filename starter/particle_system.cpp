@@ -15,7 +15,7 @@
 //     1. emit emissionCount(dt) new particles (push them onto `particles`)
 //     2. for every particle: f = externalForce(p)  (gravity, buoyancy, drag, collisions)
 //                            v += f / m dt;  x += v dt                 (symplectic Euler)
-//     3. cool towards the air: T += -coolingRate (T - T_air) dt
+//     3. cool towards the air: T += -k_c (T - T_air) dt, with k_c = coolingRate
 //     4. age += dt; remove every particle with age >= lifetime
 //
 // Done when: `ctest -R Task5` passes (tests named Task5Particles.*): the emitter's ranges and

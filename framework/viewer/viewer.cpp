@@ -101,7 +101,7 @@ void worldControls(unsigned uses, const SceneParams& defaults, SceneParams& p) {
   }
   if (uses & kUsesDrag) {
     sliderDouble("drag (N s/m)", &p.drag, 0.0, std::max(defaults.drag * 100, 1.0), "%.4g", true,
-                 "Drag coefficient: f = -kd v");
+                 "Drag coefficient: f = -k_d v");
   }
   if (uses & kUsesBuoyancy) {
     sliderDouble("buoyancy (N/K)", &p.buoyancy, 0.0, std::max(defaults.buoyancy * 10, 1e-3), "%.3g",

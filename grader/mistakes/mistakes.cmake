@@ -5,15 +5,17 @@
 set(a6_mistakes_dir ${CMAKE_CURRENT_SOURCE_DIR}/mistakes)
 if(EXISTS ${a6_mistakes_dir}/library/library.cpp)
   set(a6_mistake_models)
-  foreach(part library steppers task1 task2 task3 task4 task5 task6 task7 parts)
+  foreach(part library task1 task2 task3 task4 task5 task6 task7 parts)
     list(APPEND a6_mistake_models ${a6_mistakes_dir}/library/${part}.cpp)
   endforeach()
 else()
   set(a6_mistake_models ${a6_mistakes_dir}/no_library.cpp)
 endif()
 add_library(a6_mistakes STATIC ${a6_mistakes_dir}/mistakes.cpp ${a6_mistake_models})
-target_include_directories(a6_mistakes PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}
-                                       PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)
+target_include_directories(a6_mistakes PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 # Plain data and contact geometry only: no student code, no a6_framework.
 target_link_libraries(a6_mistakes PUBLIC a6_harness_api a6_core)
+if(TARGET a6_reference)
+  target_link_libraries(a6_mistakes PRIVATE a6_reference)  # the physics' forms, the steppers
+endif()
 target_compile_options(a6_mistakes PRIVATE ${A6_WARNINGS})

@@ -59,7 +59,7 @@ in_release() {  # the last entry that matches a path decides
 # The graders' material: never released, whatever contents.txt says (a wrong entry there fails
 # the export instead of shipping it).
 never=(solution/ tests/hidden/ tests/golden/hidden/ tests/golden/replays/
-       tests/support/reference_models.inc tests/wrong/ tests/alternative/ tests/grader/
+       grader/reference/ tests/reference/ tests/wrong/ tests/alternative/ tests/grader/
        grader/mistakes/library/ docs/instructor.md .ci/)
 
 # The public rubric, from the graders' rubric.

@@ -6,13 +6,12 @@
 # ROOT is the instructors' checkout, DEST the release. Fails (exit 1), naming file and line, when
 # DEST holds
 #   - a graders' path: solution/, tests/hidden/, tests/golden/hidden/, tests/golden/replays/,
-#     reference_models.inc,
-#     grader/mistakes/library/ (the known mistakes and the tasks' reference answers);
-#   - a line of code of the solution, the hidden checks or the reference models: every line of
-#     those files that is not a comment, is at least 25 characters long (shorter ones, such as
-#     "return f;", are in any C++ file) and is not also in the public code (starter/ and
-#     framework/; for the hidden checks, the public tests too), compared with leading and
-#     trailing blanks trimmed. A line of the solution in a public test is refused;
+#     grader/reference/ (the reference physics), grader/mistakes/library/ (the known mistakes);
+#   - a line of code of the solution, the hidden checks, the mistakes or the reference physics:
+#     every line of those files that is not a comment, is at least 25 characters long (shorter
+#     ones, such as "return f;", are in any C++ file) and is not also in the public code
+#     (starter/ and framework/; for all but the solution, the public tests too), compared with
+#     leading and trailing blanks trimmed. A line of the solution in a public test is refused;
 #   - a hidden reference image, by content (sha256), under any name;
 #   - in a test's source, a helper that computes the answer: a function whose name says it
 #     gives the expected or correct value (expectedTotal, correctStep, answerFor, ...). Public
@@ -25,8 +24,7 @@ trap 'rm -rf "$work"' EXIT
 found=0
 
 for path in solution tests/hidden tests/golden/hidden tests/golden/replays \
-            tests/support/reference_models.inc \
-            grader/mistakes/library; do
+            grader/reference grader/mistakes/library; do
   if [ -e "$dest/$path" ]; then
     echo "scan: $path is in the release" >&2
     found=1
@@ -35,17 +33,17 @@ done
 while IFS= read -r -d '' file; do
   echo "scan: ${file#"$dest"/} is in the release (a graders' file name)" >&2
   found=1
-done < <(find "$dest" \( -name reference_models.inc -o -name hidden_test.cpp \) -print0)
+done < <(find "$dest" \( -name physics.inc -o -name hidden_test.cpp \) -print0)
 
 trimmed() { sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' "$@"; }
 
-# The secret lines, less the public ones: the solution's and the reference models' less what the
-# starter and the framework hold (a public test holds none of them: a line of the solution in a
-# test is the answer); the hidden checks' and the library of known mistakes' less the public
+# The secret lines, less the public ones: the solution's less what the starter and the framework
+# hold (a public test holds none of them: a line of the solution in a test is the answer); the
+# hidden checks', the library of known mistakes' and the reference physics' less the public
 # tests' too (they share their helpers and the harness's names).
 shopt -s nullglob
-answers=("$root"/solution/*.cpp "$root"/tests/support/reference_models.inc)
-hidden_checks=("$root"/tests/hidden/* "$root"/grader/mistakes/library/*)
+answers=("$root"/solution/*.cpp)
+hidden_checks=("$root"/tests/hidden/* "$root"/grader/mistakes/library/* "$root"/grader/reference/*.{inc,h,cpp})
 # (Every test file outside the graders' folders: the library of known mistakes shares plain loops
 # with the scene tests, say.)
 mapfile -t public_tests < <(find "$root/tests" \( -path "$root/tests/hidden" -o -path "$root/tests/wrong" \

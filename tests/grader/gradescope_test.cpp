@@ -233,7 +233,7 @@ std::string whoAmISpring(const fs::path& source) {
       "    std::printf(\"A6-WHO euid=%d\\n\", static_cast<int>(geteuid()));\n"
       "    const char* secrets[] = {\n";
   for (const char* secret :
-       {"tests/golden/manifest.json", "tests/support/reference_models.inc", "grader/rubric.toml",
+       {"tests/golden/manifest.json", "grader/reference/physics.inc", "grader/rubric.toml",
         "build/grader/a6_grade", "build/grader/kit.json"}) {
     text += "        \"" + (source / secret).string() + "\",\n";
   }
@@ -353,15 +353,12 @@ void expectTheEntries(const Package& p) {
   }
   std::vector<std::string> needed = {"tests/golden/manifest.json", "grader/rubric.toml",
                                      "starter/spring.cpp", "scripts/install-deps.sh"};
-  for (const char* secret_dir : {"tests/hidden", "tests/golden/hidden"}) {
+  for (const char* secret_dir : {"tests/hidden", "tests/golden/hidden", "grader/reference"}) {
     const fs::path d = fs::path(A6_SOURCE_DIR) / secret_dir;
     if (!fs::is_directory(d)) continue;
     for (const auto& f : fs::recursive_directory_iterator(d)) {
       if (f.is_regular_file()) needed.push_back(fs::relative(f.path(), A6_SOURCE_DIR).string());
     }
-  }
-  if (fs::exists(fs::path(A6_SOURCE_DIR) / "tests/support/reference_models.inc")) {
-    needed.push_back("tests/support/reference_models.inc");
   }
   for (const std::string& n : needed) EXPECT_EQ(entries.count(n), 1u) << n << " missing";
 }
@@ -380,7 +377,7 @@ void unpackAsGradescopeDoes(const Package& p) {
 }
 
 // By content: no line of the solution that the starter lacks, in any file. The autograder's
-// own hidden material (the hidden checks, the reference force models) computes the right
+// own hidden material (the hidden checks, the reference physics) computes the right
 // answers to check against, so it may share a line or two with the solution (a cloth's grid
 // spacing, say): those are printed, and only more than kSharedLinesAllowed in one such file (a
 // copied function) fails.
@@ -394,7 +391,7 @@ void expectNoLineOfTheSolution(const Package& p) {
     ++scanned;
     const std::string name = fs::relative(f.path(), p.root / "source").string();
     const bool hiddenMaterial =
-        name.rfind("tests/hidden/", 0) == 0 || name == "tests/support/reference_models.inc";
+        name.rfind("tests/hidden/", 0) == 0 || name.rfind("grader/reference/", 0) == 0;
     std::vector<std::string> shared;
     for (const std::string& line : linesOf(f.path())) {
       if (secret.count(line) != 0) shared.push_back(line);

@@ -36,7 +36,9 @@ add() {
   printf 'submission_%s:\n  :submitters:\n  - :name: %s\n    :sid: "%s"\n' "$id" "$name" "$id" \
     >>"$export/submission_metadata.yml"
 }
-alt="$root/tests/alternative"
+# The wrong versions and alternatives as the build applied their patches (cmake/A6Variants.cmake).
+variants="${A6_VARIANTS:?BUILD/variants, set by ctest}"
+alt="$variants/alternative"
 add 101 "Ada Solution" "$scores/solution/out/results.json" "$root"/solution/*.cpp
 add 102 "Ben Float" "$scores/alternative_float_intermediates/out/results.json" "$alt"/float_intermediates/*.cpp
 add 103 "Cai Reordered" "$scores/alternative_reordered/out/results.json" "$alt"/reordered/*.cpp
@@ -45,13 +47,13 @@ add 109 "Eve Handout" "$scores/alternative_handout_only_2/out/results.json" "$al
 add 105 "Fay Starter" "$scores/starter/out/results.json" "$root"/starter/*.cpp
 cloth=t4_shear_with_structural_rest_length
 add 106 "Gus Cloth" "$scores/wrong_$cloth/out/results.json" "$root"/solution/*.cpp
-cp "$root/tests/wrong/$cloth/cloth.cpp" "$export/submission_106/"
+cp "$variants/wrong/$cloth/cloth.cpp" "$export/submission_106/"
 add 107 "Ivy Missing" "" "$root"/solution/spring.cpp
 # Three wrong versions written from the handout (tests/wrong/b*, c*), each submitted as its one
 # task file: two forget to reset the forces, one leaves the mass out of gravity.
 for w in "110 Kim b3_force_not_reset" "111 Lou c3_force_not_reset" "112 Max b2_gravity_no_mass"; do
   read -r id who wrong <<<"$w"
-  add "$id" "$who Wrong" "$scores/wrong_$wrong/out/results.json" "$root"/tests/wrong/"$wrong"/*.cpp
+  add "$id" "$who Wrong" "$scores/wrong_$wrong/out/results.json" "$variants"/wrong/"$wrong"/*.cpp
 done
 # The copy: Cai's files with every name Cai declared (variables, parameters) renamed.
 mkdir -p "$work/copy"

@@ -22,7 +22,7 @@
 #include "sandbox_user.h"
 
 namespace {
-#include "reference_models.inc"
+#include A6_FORCE_MODELS  // the reference physics (grader/reference/physics.inc)
 }  // namespace
 
 namespace a6::grader {

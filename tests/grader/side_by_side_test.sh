@@ -61,7 +61,8 @@ under-load)
   # The alternative: its own files, the solution's for the rest.
   mkdir -p "$out/float_intermediates"
   cp "$root"/solution/*.cpp "$out/float_intermediates/"
-  cp "$root"/tests/alternative/float_intermediates/*.cpp "$out/float_intermediates/"
+  cp "${A6_VARIANTS:?BUILD/variants, set by ctest}"/alternative/float_intermediates/*.cpp \
+    "$out/float_intermediates/"
   "$grade" "$root/solution" --out "$out/solution" --quiet >"$out/solution.log" 2>&1 &
   a=$!
   "$grade" "$out/float_intermediates" --out "$out/alternative" --quiet >"$out/alternative.log" 2>&1

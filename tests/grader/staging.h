@@ -128,12 +128,16 @@ inline std::vector<std::string> variants(const std::string& kind, const std::str
   return names;
 }
 
-/// The folder tests/<kind>/<name> is graded as: the solution's seven files, its own in their place.
+/// The folder tests/<kind>/<name> is graded as: the solution's seven files, its own in their place
+/// (as the build applied its patches: BUILD/variants/<kind>/<name>/, cmake/A6Variants.cmake).
 inline fs::path stageVariant(const fs::path& dir, const std::string& kind,
                              const std::string& name) {
+#ifndef A6_VARIANTS_DIR
+#error "define A6_VARIANTS_DIR (BUILD/variants) to stage a wrong version or an alternative"
+#endif
   fs::create_directories(dir);
   for (const std::string& file : kTaskFiles) {
-    const fs::path own = kSource / "tests" / kind / name / file;
+    const fs::path own = fs::path(A6_VARIANTS_DIR) / kind / name / file;
     fs::copy_file(fs::exists(own) ? own : kSource / "solution" / file, dir / file,
                   fs::copy_options::overwrite_existing);
   }

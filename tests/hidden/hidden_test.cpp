@@ -6,8 +6,9 @@
 // The seed is GoogleTest's --gtest_random_seed (a6_grade sets it); without one (ctest) it is
 // fixed, so the instructors' runs are reproducible too. Each check mixes in its own name, so
 // adding a check changes no other check's inputs. Every expected value comes from the reference
-// models (reference_models.inc) or from the slide's formula written out here, and is compared
-// with a relative tolerance: a correct solution that adds the same terms in another order passes.
+// physics (grader/reference/physics.inc) or from the slide's formula written out here, and is
+// compared with a relative tolerance: a correct solution that adds the same terms in another order
+// passes.
 //
 // Suites are named Task<N>Hidden: they count for task N in the per-task summary, and the rubric
 // gives them their own items (grader/rubric.toml: shown to students after the due date).
@@ -22,13 +23,14 @@
 
 #include "cloth_result.h"
 #include "gtest_flags.h"
+#include "reference/steppers.h"
 #include "scales.h"
 #include "suite.h"
 
 namespace a6::test {
 namespace {
 
-#include "reference_models.inc"
+#include A6_FORCE_MODELS  // the reference physics (grader/reference/physics.inc)
 
 constexpr std::uint64_t kSeedWithoutGrader = 20261122;
 
@@ -99,7 +101,8 @@ TEST(Task1Hidden, RandomSpringsMatchTheSlideFormula) {
         relativeTo(springForceScale(r.p1.x, r.p2.x, r.p1.v, r.p2.v, r.restLength, r.ks, r.kd)))
         << "input: p1 " << str(r.p1) << ", p2 " << str(r.p2) << ", l0=" << r.restLength
         << ", ks=" << r.ks << ", kd=" << r.kd << draw.seed()
-        << hint("f2 = -ks (l - l0) e - kd ((v2 - v1)·e) e, with e = (x2 - x1) / l");
+        << hint(std::string("f2 = ") + kSpringForceFormula +
+                ", with e = (x2 - x1) / l and v_rel = (v2 - v1)·e");
   }
 }
 
@@ -143,19 +146,16 @@ TEST(Task2Hidden, RandomParticlesAndEnvironmentsMatchTheSlideFormulas) {
                            ", k_d=" + num(env.drag) + ", k_r=" + num(env.repulsion) + ", " +
                            std::to_string(env.planes.size()) + " plane(s), " +
                            std::to_string(env.circles.size()) + " circle(s)" + draw.seed();
-    const Vec2 gravity = p.m * env.gravity;
-    ASSERT_VEC_NEAR(result.gravity, gravity, tol) << in << hint("gravity is m g");
-    const Vec2 buoyancy = env.buoyancy * (p.temperature - env.airTemperature) * Vec2(0, 1);
-    ASSERT_VEC_NEAR(result.buoyancy, buoyancy, tol)
-        << in << hint("buoyancy is b (T - T_air) (0, 1)");
-    const Vec2 drag = -env.drag * p.v;
-    ASSERT_VEC_NEAR(result.drag, drag, tol) << in << hint("drag is -k_d v");
-    const Vec2 repulsion = r.contact.depth > 0
-                               ? Vec2(env.repulsion * r.contact.depth * r.contact.normal)
-                               : Vec2::Zero();
-    ASSERT_VEC_NEAR(result.repulsion, repulsion, tol)
+    const std::string is = " is ";
+    ASSERT_VEC_NEAR(result.gravity, referenceGravity(p, env), tol)
+        << in << hint("gravity" + is + kGravityFormula);
+    ASSERT_VEC_NEAR(result.buoyancy, referenceBuoyancy(p, env), tol)
+        << in << hint("buoyancy" + is + kBuoyancyFormula);
+    ASSERT_VEC_NEAR(result.drag, referenceDrag(p, env), tol)
+        << in << hint("drag" + is + kDragFormula);
+    ASSERT_VEC_NEAR(result.repulsion, referenceRepulsion(env, r.contact), tol)
         << in << ", contact depth " << num(r.contact.depth) << ", normal " << str(r.contact.normal)
-        << hint("repulsion is k_r d n while d > 0, and zero otherwise");
+        << hint("repulsion" + is + kRepulsionFormula + " while d > 0, and zero otherwise");
     const Vec2 total = referenceExternalForce(p, env);
     ASSERT_VEC_NEAR(result.total, total, tol)
         << in
@@ -166,24 +166,6 @@ TEST(Task2Hidden, RandomParticlesAndEnvironmentsMatchTheSlideFormulas) {
 }
 
 // Task 3 -------------------------------------------------------------------------------------
-
-// Symplectic Euler with the reference forces: the slide's step, written out.
-void referenceStep(std::vector<Particle>& ps, const std::vector<harness::SpringData>& springs,
-                   const Environment& env, double h) {
-  for (Particle& p : ps) p.f = referenceExternalForce(p, env);
-  for (const harness::SpringData& sd : springs) {
-    Particle& p1 = ps[static_cast<std::size_t>(sd.i)];
-    Particle& p2 = ps[static_cast<std::size_t>(sd.j)];
-    const Vec2 f = referenceForce(p1, p2, sd.restLength, sd.ks, sd.kd);
-    p2.f += f;
-    p1.f -= f;
-  }
-  for (Particle& p : ps) {
-    if (p.pinned) continue;
-    p.v += h * p.f / p.m;
-    p.x += h * p.v;
-  }
-}
 
 // A random chain of 2 to 6 particles (the first one pinned or not), run 30 frames in 1 to 4
 // substeps under random gravity and drag, its state recorded every 10 frames.
@@ -237,13 +219,14 @@ void expectTheReferenceChain(const RandomChain& chain, const harness::SimulateRe
   // Positions relative to the chain's extent, velocities to its speed after falling for the run.
   const double extent = n * chain.spacing + 0.1;
   const double speed = 0.5 + 9.81 * r.frames * r.frameDt;
-  std::vector<Particle> expected = r.particles;
-  std::size_t recorded = 0;
-  for (int frame = 1; frame <= r.frames; ++frame) {
-    for (int s = 0; s < r.substeps; ++s)
-      referenceStep(expected, r.springs, r.env, r.frameDt / r.substeps);
-    if (frame % r.recordEvery != 0) continue;
-    const std::vector<Particle>& actual = result.states[recorded++];
+  // The reference's symplectic Euler step with substeps (grader/reference/steppers.h).
+  const std::optional<harness::SimulateResult> reference =
+      grader::reference::simulate(r, grader::reference::StepForm{});
+  ASSERT_TRUE(reference.has_value()) << "the reference stepper cannot run this chain";
+  for (std::size_t recorded = 0; recorded < reference->states.size(); ++recorded) {
+    const int frame = reference->recordedFrames[recorded];
+    const std::vector<Particle>& expected = reference->states[recorded];
+    const std::vector<Particle>& actual = result.states[recorded];
     ASSERT_EQ(actual.size(), expected.size()) << currentTask() << ": particles added or removed";
     for (std::size_t i = 0; i < expected.size(); ++i) {
       ASSERT_VEC_NEAR(actual[i].x, expected[i].x, relativeTo(extent, kManySteps))

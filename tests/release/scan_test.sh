@@ -21,7 +21,7 @@ fresh() {
   cp -r "$root/starter" "$root/framework" "$scratch/release/"
   cp "$root"/tests/*.cpp "$scratch/release/tests/"
   cp "$root"/tests/golden/*.cpp "$root"/tests/golden/*.png "$scratch/release/tests/golden/"
-  find "$root/tests/support" -maxdepth 1 -type f ! -name reference_models.inc \
+  find "$root/tests/support" -maxdepth 1 -type f  \
     -exec cp {} "$scratch/release/tests/support/" \;
 }
 

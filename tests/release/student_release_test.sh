@@ -79,8 +79,7 @@ give_student "$home"
 
 # 2. Contents.
 for absent in solution tests/hidden tests/golden/hidden tests/golden/replays \
-              tests/support/reference_models.inc \
-              grader/mistakes/library tests/wrong tests/grader docs/instructor.md scripts/main.sh .ci; do
+              grader/reference grader/mistakes/library tests/wrong tests/grader docs/instructor.md scripts/main.sh .ci; do
   [ -e "$release/$absent" ] && fail "$absent is in the release"
 done
 for present in README.md scripts/install-deps.sh scripts/test.sh scripts/check.sh \
@@ -266,7 +265,8 @@ pass "scripts/check.sh on a finished submission: $(grep -m1 'total ' "$work/chec
 # A wrong cloth: the local check and the graders' a6_grade agree item by item on the public items.
 mkdir -p "$home/wrong"
 cp "$root"/solution/*.cpp "$home/wrong/"
-cp "$root"/tests/wrong/t4_shear_with_structural_rest_length/cloth.cpp "$home/wrong/"
+cp "${A6_VARIANTS:?BUILD/variants, set by ctest}"/wrong/t4_shear_with_structural_rest_length/cloth.cpp \
+  "$home/wrong/"
 give_student "$home/wrong"
 as_student bash scripts/check.sh "$home/wrong" >"$work/check_wrong.log" 2>&1
 cp out/check/results.json "$work/local.json"

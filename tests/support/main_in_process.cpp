@@ -11,7 +11,7 @@
 #include "watched_student.h"
 
 namespace {
-#include A6_FORCE_MODELS  // reference_models.inc, or own_models.inc in a student release
+#include A6_FORCE_MODELS  // grader/reference/physics.inc, or own_models.inc in a student release
 
 std::unique_ptr<a6::harness::StudentCode> gStudent;
 std::unique_ptr<a6::test::WatchedStudent> gWatched;

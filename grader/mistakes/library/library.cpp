@@ -1,5 +1,7 @@
-// The library of known mistakes: every task's models, in task order.
+// The library of known mistakes: every task's models, in task order; and the reference's runs
+// the replays show beside the student's (the reference steppers in the physics' form).
 #include "mistakes/library/models.h"
+#include "reference/steppers.h"
 
 namespace a6::grader {
 
@@ -14,6 +16,14 @@ const std::vector<MistakeModel>& mistakeLibrary() {
     return models;
   }();
   return all;
+}
+
+std::optional<harness::SimulateResult> referenceSimulation(const harness::SimulateRequest& r) {
+  return reference::simulate(r, reference::StepForm{});
+}
+
+std::optional<harness::ParticlesResult> referenceParticleRun(const harness::ParticleRunRequest& r) {
+  return reference::runParticles(r, reference::ParticleFlaw::None);
 }
 
 }  // namespace a6::grader

@@ -15,6 +15,8 @@
 namespace a6::grader::mistakes {
 namespace {
 
+#include "reference/physics.inc"
+
 using harness::JacobiansResult;
 using harness::SpringForceRequest;
 using harness::SpringForceResult;
@@ -51,8 +53,8 @@ struct Form {
 const std::vector<Form<Vec2>>& elasticForms() {
   static const std::vector<Form<Vec2>> forms = {
       {"", "", "-ks (l - l0) e",
-       [](const SpringForceRequest& r, const Geometry& g) -> Vec2 {
-         return -r.ks * (g.l - r.restLength) * g.e;
+       [](const SpringForceRequest& r, const Geometry&) -> Vec2 {
+         return referenceSpringTerms(r.p1, r.p2, r.restLength, r.ks, r.kd).elastic;
        }},
       {"elastic_sign", "has the wrong sign", "+ks (l - l0) e",
        [](const SpringForceRequest& r, const Geometry& g) -> Vec2 {
@@ -78,8 +80,8 @@ const std::vector<Form<Vec2>>& elasticForms() {
 const std::vector<Form<Vec2>>& dampingForms() {
   static const std::vector<Form<Vec2>> forms = {
       {"", "", "-kd ((v2 - v1)·e) e",
-       [](const SpringForceRequest& r, const Geometry& g) -> Vec2 {
-         return -r.kd * g.u.dot(g.e) * g.e;
+       [](const SpringForceRequest& r, const Geometry&) -> Vec2 {
+         return referenceSpringTerms(r.p1, r.p2, r.restLength, r.ks, r.kd).damping;
        }},
       {"damping_sign", "has the wrong sign", "+kd ((v2 - v1)·e) e",
        [](const SpringForceRequest& r, const Geometry& g) -> Vec2 {
@@ -110,9 +112,9 @@ const std::vector<Form<Vec2>>& dampingForms() {
 
 const std::vector<Form<Mat2>>& dfdxForms() {
   static const std::vector<Form<Mat2>> forms = {
-      {"", "", "-ks (e eᵀ + (1 - l0/l)(I - e eᵀ))",
-       [](const SpringForceRequest& r, const Geometry& g) -> Mat2 {
-         return -r.ks * (g.P + (1 - r.restLength / g.l) * g.Q);
+      {"", "", kDfdxFormula,
+       [](const SpringForceRequest& r, const Geometry&) -> Mat2 {
+         return referenceSpringJacobians(r.p1.x, r.p2.x, r.restLength, r.ks, r.kd).dfdx;
        }},
       {"dfdx_sign", "has the wrong sign", "+ks (e eᵀ + (1 - l0/l)(I - e eᵀ))",
        [](const SpringForceRequest& r, const Geometry& g) -> Mat2 {
@@ -142,8 +144,10 @@ const std::vector<Form<Mat2>>& dfdxForms() {
 
 const std::vector<Form<Mat2>>& dfdvForms() {
   static const std::vector<Form<Mat2>> forms = {
-      {"", "", "-kd e eᵀ",
-       [](const SpringForceRequest& r, const Geometry& g) -> Mat2 { return -r.kd * g.P; }},
+      {"", "", kDfdvFormula,
+       [](const SpringForceRequest& r, const Geometry&) -> Mat2 {
+         return referenceSpringJacobians(r.p1.x, r.p2.x, r.restLength, r.ks, r.kd).dfdv;
+       }},
       {"dfdv_sign", "has the wrong sign", "+kd e eᵀ",
        [](const SpringForceRequest& r, const Geometry& g) -> Mat2 { return r.kd * g.P; }},
       {"dfdv_no_outer_product", "leaves out the outer product e eᵀ", "-kd I",

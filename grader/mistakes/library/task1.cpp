@@ -1,6 +1,6 @@
-// Task 1, the spring force: the reference f2 = -ks (l - l0) e - kd ((v2 - v1)·e) e, and the
-// catalogue's mistake of the guard for coincident particles (tests/wrong/t1_nan_*). The terms'
-// mistakes are named part by part (parts.cpp).
+// Task 1, the spring force: the reference's (reference/physics.inc), and the catalogue's mistake of
+// the guard for coincident particles (tests/wrong/t1_nan_*). The terms' mistakes are named part by
+// part (parts.cpp).
 #include <optional>
 
 #include "mistakes/library/compare.h"
@@ -11,10 +11,12 @@ namespace {
 
 using harness::SpringForceRequest;
 
-Vec2 springForce(const SpringForceRequest& r, bool guarded) {
+#include "reference/physics.inc"
+
+// The force with no guard for coincident ends: e = d / l is NaN when l = 0.
+Vec2 unguardedForce(const SpringForceRequest& r) {
   const Vec2 d = r.p2.x - r.p1.x;
   const double l = d.norm();
-  if (l < 1e-12 && guarded) return Vec2::Zero();
   const Vec2 e = d / l;
   return -r.ks * (l - r.restLength) * e - r.kd * (r.p2.v - r.p1.v).dot(e) * e;
 }
@@ -22,7 +24,12 @@ Vec2 springForce(const SpringForceRequest& r, bool guarded) {
 // The answer as the checks get it, with or without (`unguarded`) the guard.
 std::optional<harness::SpringForceResult> answer(const SpringForceRequest& r, bool unguarded) {
   harness::SpringForceResult out;
-  out.force = springForce(r, !unguarded);
+  if (unguarded) {
+    out.force = unguardedForce(r);
+  } else {
+    const SpringTerms t = referenceSpringTerms(r.p1, r.p2, r.restLength, r.ks, r.kd);
+    out.force = t.elastic + t.damping;
+  }
   return out;
 }
 

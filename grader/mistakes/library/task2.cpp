@@ -13,6 +13,8 @@
 namespace a6::grader::mistakes {
 namespace {
 
+#include "reference/physics.inc"
+
 using harness::ForcesRequest;
 using harness::ForcesResult;
 
@@ -31,13 +33,13 @@ const char* const kPartNames[kParts] = {"gravity", "buoyancy", "drag", "repulsio
 
 const std::vector<Form>& formsOf(int part) {
   static const std::vector<Form> forms[kParts] = {
-      {{"", "", "m g"},
+      {{"", "", kGravityFormula},
        {"gravity_without_mass", "leaves out the mass", "g"},
        {"gravity_sign", "has the wrong sign", "-m g"}},
-      {{"", "", "b (T - T_air)(0, 1)"},
+      {{"", "", kBuoyancyFormula},
        {"buoyancy_downwards", "has the wrong sign", "b (T_air - T)(0, 1)"},
        {"buoyancy_no_air", "leaves out the air's temperature", "b T (0, 1)"}},
-      {{"", "", "-k_d v"},
+      {{"", "", kDragFormula},
        {"drag_wrong_sign", "has the wrong sign", "+k_d v"},
        {"drag_quadratic", "grows with the square of the speed", "-k_d |v| v"}},
       {{"", "", "k_r d n while d > 0, else 0"},
@@ -65,46 +67,58 @@ enum Sum : std::size_t { kEveryObstacle, kSumNoCircles, kSumFirstObstacle, kSumW
 // The form of each part a model takes.
 using Choice = std::array<std::size_t, kParts>;
 
-Vec2 repulsion(const Contact& c, double kr, std::size_t form) {
-  if (c.depth <= 0 && form != kRepulsionAlwaysOn) return Vec2::Zero();
-  return (form == kRepulsionSign ? -kr : kr) * c.depth * c.normal;
+// A part's value in its form: the physics' (the reference's) or a wrong one.
+Vec2 repulsion(const Contact& c, const Environment& env, std::size_t form) {
+  if (form == kRepulsionAlwaysOn) return env.repulsion * c.depth * c.normal;
+  const Vec2 f = referenceRepulsion(env, c);
+  return form == kRepulsionSign ? Vec2(-f) : f;
+}
+
+Vec2 gravity(const Particle& p, const Environment& env, std::size_t form) {
+  if (form == kGravityNoMass) return env.gravity;
+  const Vec2 f = referenceGravity(p, env);
+  return form == kGravitySign ? Vec2(-f) : f;
+}
+
+Vec2 buoyancy(const Particle& p, const Environment& env, std::size_t form) {
+  if (form == kBuoyancySign)
+    return env.buoyancy * (env.airTemperature - p.temperature) * Vec2(0, 1);
+  if (form == kBuoyancyNoAir) return env.buoyancy * p.temperature * Vec2(0, 1);
+  return referenceBuoyancy(p, env);
+}
+
+Vec2 drag(const Particle& p, const Environment& env, std::size_t form) {
+  const Vec2 f = referenceDrag(p, env);
+  if (form == kDragSign) return -f;
+  return form == kDragQuadratic ? Vec2(-env.drag * p.v.norm() * p.v) : f;
 }
 
 // externalForce's sum in its form: the three forces, then each obstacle's repulsion (the
 // half-planes first, as the handout's loop takes them).
 Vec2 sum(const ForcesRequest& r, const ForcesResult& parts, const Choice& c) {
-  const double kr = c[kSum] == kSumWithDrag ? r.env.drag : r.env.repulsion;
+  Environment env = r.env;
+  if (c[kSum] == kSumWithDrag) env.repulsion = env.drag;
   Vec2 f = parts.gravity + parts.buoyancy + parts.drag;
   std::vector<Contact> contacts;
-  for (const HalfPlane& plane : r.env.planes) contacts.push_back(contactWith(plane, r.particle.x));
+  for (const HalfPlane& plane : env.planes) contacts.push_back(contactWith(plane, r.particle.x));
   if (c[kSum] != kSumNoCircles) {
-    for (const CircleObstacle& circle : r.env.circles)
+    for (const CircleObstacle& circle : env.circles)
       contacts.push_back(contactWith(circle, r.particle.x));
   }
   for (const Contact& contact : contacts) {
-    const Vec2 push = repulsion(contact, kr, c[kRepulsion]);
+    const Vec2 push = repulsion(contact, env, c[kRepulsion]);
     f += push;
     if (c[kSum] == kSumFirstObstacle && push != Vec2::Zero()) break;
   }
   return f;
 }
 
-double buoyancyWarmth(const Particle& p, const Environment& env, std::size_t form) {
-  if (form == kBuoyancySign) return env.airTemperature - p.temperature;
-  if (form == kBuoyancyNoAir) return p.temperature;
-  return p.temperature - env.airTemperature;
-}
-
 ForcesResult forces(const ForcesRequest& r, const Choice& c) {
-  const Particle& p = r.particle;
-  const Environment& env = r.env;
   ForcesResult out;
-  const double mass = c[kGravity] == kGravityNoMass ? 1.0 : p.m;
-  out.gravity = (c[kGravity] == kGravitySign ? -mass : mass) * env.gravity;
-  out.buoyancy = env.buoyancy * buoyancyWarmth(p, env, c[kBuoyancy]) * Vec2(0, 1);
-  const double kd = c[kDrag] == kDragSign ? -env.drag : env.drag;
-  out.drag = -kd * (c[kDrag] == kDragQuadratic ? p.v.norm() : 1.0) * p.v;
-  out.repulsion = repulsion(r.contact, env.repulsion, c[kRepulsion]);
+  out.gravity = gravity(r.particle, r.env, c[kGravity]);
+  out.buoyancy = buoyancy(r.particle, r.env, c[kBuoyancy]);
+  out.drag = drag(r.particle, r.env, c[kDrag]);
+  out.repulsion = repulsion(r.contact, r.env, c[kRepulsion]);
   out.total = sum(r, out, c);
   return out;
 }

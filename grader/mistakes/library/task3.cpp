@@ -1,14 +1,17 @@
-// Task 3, time stepping: the reference's symplectic Euler step (steppers.h, with the reference
-// forces, which the checks of task 3 ask the probe for too: referenceForces), and its mistakes
-// part by part: the step's parts (resetting the forces, a spring's two ends, the mass, the order
-// of v and x, the pins, the substeps' length) each in the physics' form or a wrong one, with one
-// or two parts wrong. Requests run on the student's own forces or with the implicit step cannot
+// Task 3, time stepping: the reference's symplectic Euler step (reference/steppers.h, with the
+// reference forces, which the checks of task 3 ask the probe for too: referenceForces), and its
+// mistakes part by part: the step's parts (resetting the forces, a spring's two ends, the mass, the
+// order of v and x, the pins, the substeps' length) each in the physics' form or a wrong one, with
+// one or two parts wrong. Requests run on the student's own forces or with the implicit step cannot
 // be modelled: they are skipped.
 #include "mistakes/library/models.h"
 #include "mistakes/library/step_parts.h"
-#include "mistakes/library/steppers.h"
+#include "reference/steppers.h"
 
 namespace a6::grader::mistakes {
+
+using reference::simulate;
+using reference::StepForm;
 
 // Every step with one or two parts in a wrong form, named part by part (MistakeModel::partByPart).
 std::vector<MistakeModel> task3Mistakes() {

@@ -1,17 +1,20 @@
 // Task 5, the particle system. The update of particles already alive (no emission: rate 0) is
-// deterministic: the reference (steppers.h: forces with the reference model, symplectic Euler,
-// cooling towards the air, ageing, removal at age >= lifetime) and the mistakes of tests/wrong/t5_*
-// that change it answer ParticleRunRequest as those wrong versions do. The emitter's mistakes draw
-// at random: they are recognised by what the emitted sample shows (every velocity the same; a
-// disc crowded at its centre), beside what the reference's sample shows.
+// deterministic: the reference (reference/steppers.h: forces with the reference model, symplectic
+// Euler, cooling towards the air, ageing, removal at age >= lifetime) and the mistakes of
+// tests/wrong/t5_* that change it answer ParticleRunRequest as those wrong versions do. The
+// emitter's mistakes draw at random: they are recognised by what the emitted sample shows (every
+// velocity the same; a disc crowded at its centre), beside what the reference's sample shows.
 #include <algorithm>
 #include <optional>
 
 #include "mistakes/library/compare.h"
 #include "mistakes/library/models.h"
-#include "mistakes/library/steppers.h"
+#include "reference/steppers.h"
 
 namespace a6::grader::mistakes {
+
+using reference::ParticleFlaw;
+using reference::runParticles;
 namespace {
 
 using harness::ParticleRunRequest;

@@ -1,15 +1,18 @@
-// Task 7, the implicit step, part by part: the reference's step (steppers.h: one linearised
-// backward Euler step with the reference forces and the physics' Jacobians, solved densely) with
-// its parts (the off-diagonal blocks' sign, the power of h before dfdx, the term h² dfdx v of b,
-// how Δv is applied, the pins' fix(), the order of v and x) each in the physics' form or a wrong
-// one, with one or two parts wrong. The checks' small systems are modelled (a dense solve per
-// step); the stiff cloth, and requests run on the student's own forces, are skipped. A wrong
-// Jacobian makes every one of these differ: it is named by its own models (parts.cpp).
+// Task 7, the implicit step, part by part: the reference's step (reference/steppers.h: one
+// linearised backward Euler step with the reference forces and the physics' Jacobians, solved
+// densely) with its parts (the off-diagonal blocks' sign, the power of h before dfdx, the term h²
+// dfdx v of b, how Δv is applied, the pins' fix(), the order of v and x) each in the physics' form
+// or a wrong one, with one or two parts wrong. The checks' small systems are modelled (a dense
+// solve per step); the stiff cloth, and requests run on the student's own forces, are skipped. A
+// wrong Jacobian makes every one of these differ: it is named by its own models (parts.cpp).
 #include "mistakes/library/models.h"
 #include "mistakes/library/step_parts.h"
-#include "mistakes/library/steppers.h"
+#include "reference/steppers.h"
 
 namespace a6::grader::mistakes {
+
+using reference::ImplicitForm;
+using reference::simulateImplicit;
 
 // Every step with one or two parts in a wrong form (MistakeModel::partByPart); each part has its
 // own number: none excludes another.

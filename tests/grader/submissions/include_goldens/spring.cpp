@@ -12,7 +12,7 @@
 #if __has_include("@A6_SOURCE_DIR@/tests/golden/manifest.json") || \
     __has_include("@A6_SOURCE_DIR@/tests/golden/pendulum_f0.png") || \
     __has_include("@A6_SOURCE_DIR@/tests/task1_spring_test.cpp") || \
-    __has_include("@A6_SOURCE_DIR@/tests/support/reference_models.inc") || \
+    __has_include("@A6_SOURCE_DIR@/grader/reference/physics.inc") || \
     __has_include("../tests/golden/manifest.json") || \
     __has_include("../../tests/golden/manifest.json") || \
     __has_include("../../../tests/golden/manifest.json") || \
@@ -25,7 +25,7 @@
     __has_include("../../../../../../../../../../tests/golden/manifest.json") || \
     __has_include("../../../../../../../../../../../tests/golden/manifest.json") || \
     __has_include("../../../../../../../../../../../../tests/golden/manifest.json") || \
-    __has_include(<golden/manifest.json>) || __has_include(<reference_models.inc>)
+    __has_include(<golden/manifest.json>) || __has_include(<reference/physics.inc>)
 #define A6_HOSTILE_SEES_SECRETS 1
 #endif
 
