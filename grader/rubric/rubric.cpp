@@ -196,7 +196,7 @@ class Checker {
 const std::vector<std::string> kTopKeys = {"title", "total", "visibility", "time_limit", "item"};
 const std::vector<std::string> kItemKeys = {"name",       "task",           "tests",
                                             "points",     "all_or_nothing", "extra_credit",
-                                            "visibility", "time_limit"};
+                                            "visibility", "time_limit",     "checks"};
 
 // An item's `task`: a task of the table (harness/tasks.h), or 0 for none.
 void parseTask(const toml::node& node, int line, const std::string& where, Checker& check,
@@ -249,10 +249,15 @@ void parseItemKey(const std::string& k, const toml::node& node, int line, const 
     check.visibility(node, where, item.visibility);
   } else if (k == "time_limit") {
     check.timeLimit(node, where, item.timeLimitSeconds);
+  } else if (k == "checks") {
+    long long count = 0;
+    if (check.integer(node, where, count) && (count < 0 || count > 100000))
+      check.error(line, where + " must be a count of checks, 0 or more");
+    item.checks = static_cast<int>(count);
   } else {
     check.error(line, "unknown key '" + k + "' in " + label + suggestion(k, kItemKeys) +
                           "; an item has: name, task, tests, points, all_or_nothing, "
-                          "extra_credit, visibility, time_limit");
+                          "extra_credit, visibility, time_limit, checks");
   }
 }
 

@@ -27,7 +27,11 @@ struct RubricItem {
   bool extraCredit = false;  ///< counts above the total (max_score 0 in results.json)
   Visibility visibility = Visibility::Visible;
   double timeLimitSeconds = 10;  ///< per request of each matching test, s
-  int line = 0;                  ///< where the item starts in the rubric file (for messages)
+  /// How many checks the item counts, as the rubric says (`checks`, for an item with a glob: a
+  /// check a TA adds then fails the ctest grader_rubric until an item is chosen for it); -1: not
+  /// said.
+  int checks = -1;
+  int line = 0;  ///< where the item starts in the rubric file (for messages)
 
   /// True when `testName` matches one of the globs (regardless of earlier items).
   bool matches(const std::string& testName) const;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -358,8 +359,21 @@ TEST(DefaultRubric, CountsEveryCheckTheGraderRunsExactlyOnce) {
     ASSERT_GE(item, 0) << name << " is matched by no rubric item";
     ++perItem[static_cast<std::size_t>(item)];
   }
+  // A glob absorbs a new check of its suite: each glob item says how many it counts, so that a
+  // check added without an item of its own (say, one meant to carry 2 points) is noticed.
   for (std::size_t i = 0; i < r.items.size(); ++i) {
-    EXPECT_GT(perItem[i], 0) << "rubric item '" << r.items[i].name << "' matches no check";
+    const RubricItem& item = r.items[i];
+    EXPECT_GT(perItem[i], 0) << "rubric item '" << item.name << "' matches no check";
+    const bool glob = std::any_of(item.tests.begin(), item.tests.end(), [](const std::string& g) {
+      return g.find_first_of("*?") != std::string::npos;
+    });
+    if (!glob) continue;
+    EXPECT_EQ(perItem[i], item.checks)
+        << "rubric item '" << item.name << "' (grader/rubric.toml, line " << item.line
+        << ") counts " << perItem[i] << " checks and says checks = " << item.checks
+        << ": a check added to its suite counts for it (a6_grade --list-tests). If that is "
+           "what you meant, say checks = "
+        << perItem[i] << "; else give the check an item of its own before this one";
   }
   // Every check of the physics suite is among them.
   for (const std::string& name : physicsTests()) {
