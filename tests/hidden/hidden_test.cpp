@@ -23,6 +23,7 @@
 
 #include "cloth_result.h"
 #include "gtest_flags.h"
+#include "reference/cloth.h"
 #include "reference/steppers.h"
 #include "scales.h"
 #include "suite.h"
@@ -275,26 +276,31 @@ ClothSpec randomClothSpec(Draw& draw) {
   return spec;
 }
 
+// The reference builder's cloth (grader/reference/cloth.h), read relative to base as the
+// student's is.
+harness::ClothResult referenceClothPart(const ClothSpec& spec) {
+  return clothPart(grader::reference::referenceCloth(spec), spec.n);
+}
+
 // Every particle at its grid point, the top corners alone pinned, every mass particleMass.
 // `in` describes the input.
 void expectTheClothGrid(const ClothSpec& spec, const harness::ClothResult& result,
                         const std::string& in) {
   const int n = spec.n;
-  const double h = spec.size / n;
+  const harness::ClothResult want = referenceClothPart(spec);
   const Tolerance length = relativeTo(spec.size + spec.origin.norm());
-  ASSERT_EQ(result.particles.size(), static_cast<std::size_t>((n + 1) * (n + 1)))
+  ASSERT_EQ(result.particles.size(), want.particles.size())
       << currentTask() << ": " << in << hint("(n + 1)² particles");
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i <= n; ++i) {
-      const Particle& p = result.particles[static_cast<std::size_t>(clothIndex(i, j, n))];
-      const Vec2 x = spec.origin + Vec2(i, -j) * h;
-      ASSERT_VEC_NEAR(p.x, x, length)
+      const auto k = static_cast<std::size_t>(clothIndex(i, j, n));
+      const Particle &p = result.particles[k], &q = want.particles[k];
+      ASSERT_VEC_NEAR(p.x, q.x, length)
           << "particle (" << i << ", " << j << "), " << in
           << hint("particle (i, j) sits at origin + (i, -j) size / n, index j (n + 1) + i");
-      ASSERT_EQ(p.pinned, (j == 0 && (i == 0 || i == n)))
-          << currentTask() << ": particle (" << i << ", " << j << "), " << in
-          << hint("pin the two top corners only");
-      ASSERT_CLOSE(p.m, spec.particleMass, relativeTo(spec.particleMass))
+      ASSERT_EQ(p.pinned, q.pinned) << currentTask() << ": particle (" << i << ", " << j << "), "
+                                    << in << hint("pin the two top corners only");
+      ASSERT_CLOSE(p.m, q.m, relativeTo(spec.particleMass))
           << in << hint("every particle has particleMass");
     }
   }
@@ -305,25 +311,9 @@ using ClothSpringKey = std::pair<int, int>;
 using ClothSprings = std::map<ClothSpringKey, std::tuple<SpringType, double, double, double>>;
 
 ClothSprings expectedClothSprings(const ClothSpec& spec) {
-  const int n = spec.n;
-  const double h = spec.size / n;
   ClothSprings want;
-  auto add = [&](int i1, int j1, int i2, int j2, SpringType type, double l0, double ks, double kd) {
-    const int a = clothIndex(i1, j1, n), b = clothIndex(i2, j2, n);
-    want[{std::min(a, b), std::max(a, b)}] = {type, l0, ks, kd};
-  };
-  for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= n; ++i) {
-      if (i < n)
-        add(i, j, i + 1, j, SpringType::Structural, h, spec.ksStructural, spec.kdStructural);
-      if (j < n)
-        add(i, j, i, j + 1, SpringType::Structural, h, spec.ksStructural, spec.kdStructural);
-      if (spec.shear && i < n && j < n) {
-        add(i, j, i + 1, j + 1, SpringType::Shear, std::sqrt(2.0) * h, spec.ksShear, spec.kdShear);
-        add(i + 1, j, i, j + 1, SpringType::Shear, std::sqrt(2.0) * h, spec.ksShear, spec.kdShear);
-      }
-    }
-  }
+  for (const harness::SpringData& s : referenceClothPart(spec).springs)
+    want[{std::min(s.i, s.j), std::max(s.i, s.j)}] = {s.type, s.restLength, s.ks, s.kd};
   return want;
 }
 

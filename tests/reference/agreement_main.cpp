@@ -1,9 +1,9 @@
 // The solution agrees with the reference physics on every check's inputs. The physics suite
 // (public and hidden checks) runs with the solution linked in, as the in-process suite does;
 // every request the reference can answer (grader/reference/: the spring force and its
-// Jacobians, the forces, the steps of tasks 3 and 7 with the reference forces, the update of
-// particles already alive) is answered by the reference too, and the answers compared. Exit
-// code 0 when every kind was compared at least once and no answer differed; 1 otherwise, with
+// Jacobians, the forces, the steps of tasks 3 and 7 with the reference forces, the cloth, the
+// update of particles already alive) is answered by the reference too, and the answers compared.
+// Exit code 0 when every kind was compared at least once and no answer differed; 1 otherwise, with
 // the first differences. The checks' own verdicts are the physics test's, not this one's.
 #include <gtest/gtest.h>
 
@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "reference/cloth.h"
 #include "reference/steppers.h"
 #include "suite.h"
 
@@ -108,8 +109,15 @@ void compare(const ParticleRunRequest& r, const ParticlesResult& got) {
       want->counts == got.counts && sameParticles(got.particles, want->particles), where());
 }
 
+void compare(const ClothRequest& r, const ClothResult& got) {
+  if (r.spec.n < 1 || r.spec.n > 200) return;  // no cloth: the checks of bad specs
+  gTallies["cloth"].add(
+      grader::reference::sameCloth(got, grader::reference::referenceCloth(r.spec), kForces),
+      where());
+}
+
 template <class R>
-void compare(const R&, const typename R::Result&) {}  // cloth, emission, joints, scenes
+void compare(const R&, const typename R::Result&) {}  // emission, joints, scenes
 
 // The solution, with each answer compared with the reference's.
 class Compared final : public StudentCode {
@@ -148,8 +156,8 @@ int main(int argc, char** argv) {
   gCompared = std::make_unique<Compared>(*gSolution);
   if (RUN_ALL_TESTS() != 0) std::printf("(checks failed: the physics test says which)\n");
   int status = 0;
-  for (const char* kind :
-       {"springForce", "springJacobians", "forces", "step", "stepImplicit", "particleUpdate"}) {
+  for (const char* kind : {"springForce", "springJacobians", "forces", "step", "stepImplicit",
+                           "cloth", "particleUpdate"}) {
     const Tally& t = gTallies[kind];
     std::printf("%-16s %5d answers compared, %d differ\n", kind, t.compared, t.differing);
     for (const std::string& check : t.differences) std::printf("  differs in %s\n", check.c_str());

@@ -35,109 +35,128 @@ struct Law {
   std::function<std::pair<Bindings, Value>(Draw&)> draw;
 };
 
-std::vector<Law> laws() {
-  const auto spring = [](Draw& d) {
-    Particle p1, p2;
-    p1.x = d.vec(3), p2.x = p1.x + d.vec(2) + Vec2(0.1, 0), p1.v = d.vec(2), p2.v = d.vec(2);
-    const double l0 = d.uniform(0.1, 3), ks = d.uniform(1, 500), kd = d.uniform(0, 5);
-    const Vec2 delta = p2.x - p1.x;
-    const Vec2 e = delta / delta.norm();
-    Bindings b = {{"ks", scalar(ks)},
-                  {"kd", scalar(kd)},
-                  {"l", scalar(delta.norm())},
-                  {"l0", scalar(l0)},
-                  {"e", e},
-                  {"v_rel", scalar((p2.v - p1.v).dot(e))},
-                  {"I", Eigen::Matrix2d::Identity()}};
-    const SpringTerms t = referenceSpringTerms(p1, p2, l0, ks, kd);
-    const SpringJacobians j = referenceSpringJacobians(p1.x, p2.x, l0, ks, kd);
-    return std::make_tuple(b, Value(t.elastic + t.damping), j);
-  };
-  const auto particle = [](Draw& d, Particle& p, Environment& env) {
-    p.x = d.vec(2), p.v = d.vec(4), p.m = d.uniform(0.01, 5), p.temperature = d.uniform(250, 900);
-    env.gravity = d.vec(10), env.airTemperature = d.uniform(250, 320);
-    env.buoyancy = d.uniform(0, 0.05), env.drag = d.uniform(0, 2),
-    env.repulsion = d.uniform(0, 2000);
-    return Bindings{{"m", scalar(p.m)},
-                    {"g", env.gravity},
-                    {"v", p.v},
-                    {"T", scalar(p.temperature)},
-                    {"T_air", scalar(env.airTemperature)},
-                    {"b", scalar(env.buoyancy)},
-                    {"k_d", scalar(env.drag)},
-                    {"k_r", scalar(env.repulsion)}};
-  };
-  const std::vector<const char*> forcesReaders = {"docs/handout.md", "starter/forces.cpp",
-                                                  "framework/include/a6/forces.h"};
-  std::vector<const char*> viewerReaders = forcesReaders;
-  viewerReaders.insert(viewerReaders.end(), {"framework/viewer/viewer.cpp", "docs/viewer.md"});
-  using Pair = std::pair<Bindings, Value>;
+// A spring with random ends and constants: the symbols of its laws, its force and Jacobians.
+struct SpringDraw {
+  Bindings symbols;
+  Value force;
+  SpringJacobians jacobians;
+};
+
+SpringDraw drawSpring(Draw& d) {
+  Particle p1, p2;
+  p1.x = d.vec(3), p2.x = p1.x + d.vec(2) + Vec2(0.1, 0), p1.v = d.vec(2), p2.v = d.vec(2);
+  const double l0 = d.uniform(0.1, 3), ks = d.uniform(1, 500), kd = d.uniform(0, 5);
+  const Vec2 delta = p2.x - p1.x;
+  const Vec2 e = delta / delta.norm();
+  const SpringTerms t = referenceSpringTerms(p1, p2, l0, ks, kd);
+  return {{{"ks", scalar(ks)},
+           {"kd", scalar(kd)},
+           {"l", scalar(delta.norm())},
+           {"l0", scalar(l0)},
+           {"e", e},
+           {"v_rel", scalar((p2.v - p1.v).dot(e))},
+           {"I", Eigen::Matrix2d::Identity()}},
+          t.elastic + t.damping,
+          referenceSpringJacobians(p1.x, p2.x, l0, ks, kd)};
+}
+
+// A particle in an environment, at random: the symbols of the forces' laws.
+struct ParticleDraw {
+  Particle p;
+  Environment env;
+  Bindings symbols;
+};
+
+ParticleDraw drawParticle(Draw& d) {
+  ParticleDraw x;
+  Particle& p = x.p;
+  Environment& env = x.env;
+  p.x = d.vec(2), p.v = d.vec(4), p.m = d.uniform(0.01, 5), p.temperature = d.uniform(250, 900);
+  env.gravity = d.vec(10), env.airTemperature = d.uniform(250, 320);
+  env.buoyancy = d.uniform(0, 0.05), env.drag = d.uniform(0, 2), env.repulsion = d.uniform(0, 2000);
+  x.symbols = {{"m", scalar(p.m)},
+               {"g", env.gravity},
+               {"v", p.v},
+               {"T", scalar(p.temperature)},
+               {"T_air", scalar(env.airTemperature)},
+               {"b", scalar(env.buoyancy)},
+               {"k_d", scalar(env.drag)},
+               {"k_r", scalar(env.repulsion)}};
+  return x;
+}
+
+using Pair = std::pair<Bindings, Value>;
+
+std::vector<Law> springLaws() {
+  const std::vector<const char*> jacobianReaders = {"docs/handout.md", "starter/implicit.cpp",
+                                                    "framework/include/a6/implicit.h"};
   return {
       {"the spring force",
        kSpringForceFormula,
        {"docs/handout.md", "starter/spring.cpp", "framework/include/a6/spring.h"},
-       [spring](Draw& d) {
-         auto [b, f, j] = spring(d);
-         return Pair{b, f};
+       [](Draw& d) {
+         const SpringDraw s = drawSpring(d);
+         return Pair{s.symbols, s.force};
        }},
-      {"dfdx",
-       kDfdxFormula,
-       {"docs/handout.md", "starter/implicit.cpp", "framework/include/a6/implicit.h"},
-       [spring](Draw& d) {
-         auto [b, f, j] = spring(d);
-         return Pair{b, j.dfdx};
+      {"dfdx", kDfdxFormula, jacobianReaders,
+       [](Draw& d) {
+         const SpringDraw s = drawSpring(d);
+         return Pair{s.symbols, s.jacobians.dfdx};
        }},
-      {"dfdv",
-       kDfdvFormula,
-       {"docs/handout.md", "starter/implicit.cpp", "framework/include/a6/implicit.h"},
-       [spring](Draw& d) {
-         auto [b, f, j] = spring(d);
-         return Pair{b, j.dfdv};
+      {"dfdv", kDfdvFormula, jacobianReaders,
+       [](Draw& d) {
+         const SpringDraw s = drawSpring(d);
+         return Pair{s.symbols, s.jacobians.dfdv};
        }},
+  };
+}
+
+std::vector<Law> particleLaws() {
+  const std::vector<const char*> forcesReaders = {"docs/handout.md", "starter/forces.cpp",
+                                                  "framework/include/a6/forces.h"};
+  std::vector<const char*> viewerReaders = forcesReaders;
+  viewerReaders.insert(viewerReaders.end(), {"framework/viewer/viewer.cpp", "docs/viewer.md"});
+  return {
       {"gravity", kGravityFormula, forcesReaders,
-       [particle](Draw& d) {
-         Particle p;
-         Environment env;
-         const Bindings b = particle(d, p, env);
-         return Pair{b, referenceGravity(p, env)};
+       [](Draw& d) {
+         const ParticleDraw x = drawParticle(d);
+         return Pair{x.symbols, referenceGravity(x.p, x.env)};
        }},
       {"buoyancy", kBuoyancyFormula, viewerReaders,
-       [particle](Draw& d) {
-         Particle p;
-         Environment env;
-         const Bindings b = particle(d, p, env);
-         return Pair{b, referenceBuoyancy(p, env)};
+       [](Draw& d) {
+         const ParticleDraw x = drawParticle(d);
+         return Pair{x.symbols, referenceBuoyancy(x.p, x.env)};
        }},
       {"drag", kDragFormula, viewerReaders,
-       [particle](Draw& d) {
-         Particle p;
-         Environment env;
-         const Bindings b = particle(d, p, env);
-         return Pair{b, referenceDrag(p, env)};
+       [](Draw& d) {
+         const ParticleDraw x = drawParticle(d);
+         return Pair{x.symbols, referenceDrag(x.p, x.env)};
        }},
       {"repulsion", kRepulsionFormula, forcesReaders,
-       [particle](Draw& d) {
-         Particle p;
-         Environment env;
-         Bindings b = particle(d, p, env);
+       [](Draw& d) {
+         ParticleDraw x = drawParticle(d);
          Contact c;
          c.depth = d.uniform(1e-3, 0.2);  // inside: outside, the force is zero by the text's words
          c.normal = d.vec(1).normalized();
-         b["d"] = scalar(c.depth), b["n"] = c.normal;
-         return Pair{b, referenceRepulsion(env, c)};
+         x.symbols["d"] = scalar(c.depth), x.symbols["n"] = c.normal;
+         return Pair{x.symbols, referenceRepulsion(x.env, c)};
        }},
       {"cooling",
        kCoolingFormula,
        {"docs/handout.md", "starter/particle_system.cpp", "framework/include/a6/particle_system.h"},
-       [particle](Draw& d) {
-         Particle p;
-         Environment env;
-         Bindings b = particle(d, p, env);
+       [](Draw& d) {
+         ParticleDraw x = drawParticle(d);
          const double rate = d.uniform(0, 3), dt = d.uniform(1e-3, 0.1);
-         b["k_c"] = scalar(rate), b["dt"] = scalar(dt);
-         return Pair{b, scalar(referenceCooling(p, env, rate, dt))};
+         x.symbols["k_c"] = scalar(rate), x.symbols["dt"] = scalar(dt);
+         return Pair{x.symbols, scalar(referenceCooling(x.p, x.env, rate, dt))};
        }},
   };
+}
+
+std::vector<Law> laws() {
+  std::vector<Law> all = springLaws();
+  for (Law& law : particleLaws()) all.push_back(std::move(law));
+  return all;
 }
 
 std::string textOf(const std::string& path) {

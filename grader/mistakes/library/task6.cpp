@@ -6,6 +6,7 @@
 
 #include "mistakes/library/compare.h"
 #include "mistakes/library/models.h"
+#include "reference/joints.h"
 #include "scenes/box2d_scenes.h"
 
 namespace a6::grader::mistakes {
@@ -16,7 +17,6 @@ using harness::DragEvent;
 using harness::JointInfo;
 namespace p = box2d_params;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kFloat = 1e-3;  // Box2D keeps its joints in float: relative closeness
 
 bool close(double a, double b) { return std::abs(a - b) <= kFloat * std::max(1.0, std::abs(b)); }
@@ -47,12 +47,9 @@ double massOf(const Box2DResult& r, int body) {
              : 0;
 }
 
-// b2LinearStiffness: the stiffness of a spring of `hertz` between the joint's two bodies.
+// The stiffness of a spring of `hertz` between the joint's two bodies (reference/joints.h).
 double stiffnessOf(const Box2DResult& r, const JointInfo& j, double hertz) {
-  const double a = massOf(r, j.bodyA), b = massOf(r, j.bodyB);
-  const double mass = a > 0 && b > 0 ? a * b / (a + b) : a > 0 ? a : b;
-  const double omega = 2 * kPi * hertz;
-  return mass * omega * omega;
+  return reference::referenceJointStiffness(massOf(r, j.bodyA), massOf(r, j.bodyB), hertz);
 }
 
 Likeness hingeAtCentre(const Box2DResult&, const JointInfo& j) {
@@ -96,10 +93,11 @@ Likeness offsetsNotTurned(const Box2DResult&, const JointInfo& j) {
 Likeness mouseMaxForce(const Box2DResult& r, const JointInfo& j) {
   const double mass = massOf(r, j.bodyB);
   if (close(mass, 1)) return Likeness::Uninformative;
-  return shows(close(j.maxForce, 1000), close(j.maxForce, 1000 * mass));
+  const double perKilogram = reference::kMouseForcePerKilogram;
+  return shows(close(j.maxForce, perKilogram), close(j.maxForce, perKilogram * mass));
 }
 Likeness mouseFrequency(const Box2DResult& r, const JointInfo& j) {
-  const double expected = stiffnessOf(r, j, 5);
+  const double expected = stiffnessOf(r, j, reference::kMouseHertz);
   return shows(j.stiffness > 0 && !close(j.stiffness, expected), close(j.stiffness, expected));
 }
 

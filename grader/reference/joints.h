@@ -1,0 +1,24 @@
+// The reference joints (task 6): what a joint's parameters are, as Box2D holds them, beyond the
+// scenes' own constants (scenes/box2d_scenes.h, which the students read too). The mistake
+// library's models of task 6 judge the student's joints against these. Graders' material, as
+// physics.inc.
+#pragma once
+
+namespace a6::grader::reference {
+
+/// The mouse joint of a drag: maxForce = kMouseForcePerKilogram × the body's mass, its spring
+/// at kMouseHertz (damping ratio 0.7).
+constexpr double kMouseForcePerKilogram = 1000;  ///< N/kg
+constexpr double kMouseHertz = 5;
+
+/// b2LinearStiffness: the stiffness, N/m, of a spring of `hertz` between two bodies (a mass of 0:
+/// a static body), m ω² with m their reduced mass and ω = 2π hertz.
+inline double referenceJointStiffness(double massA, double massB, double hertz) {
+  const double mass = massA > 0 && massB > 0 ? massA * massB / (massA + massB)
+                      : massA > 0            ? massA
+                                             : massB;
+  const double omega = 2 * 3.14159265358979323846 * hertz;
+  return mass * omega * omega;
+}
+
+}  // namespace a6::grader::reference
