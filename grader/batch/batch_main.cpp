@@ -72,6 +72,7 @@ using namespace a6::grader::batch;
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using a6::grader::process::secondsAfter;
 using a6::grader::process::secondsSince;
 
 constexpr const char* kMarker = "batch.json";
@@ -292,9 +293,7 @@ class Batch {
     }
     setpgid(pid, pid);  // here too: a time limit may kill the group before the child set it
     const auto now = Clock::now();
-    running_.push_back({i, pid, now,
-                        now + std::chrono::duration_cast<Clock::duration>(
-                                  std::chrono::duration<double>(o_.timeout))});
+    running_.push_back({i, pid, now, secondsAfter(now, o_.timeout)});
     return true;
   }
 

@@ -37,6 +37,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+using process::secondsAfter;
 using process::secondsSince;
 
 // ---- reading what the compiler and the linker said ----
@@ -348,8 +349,7 @@ class ProbeBuilder {
         workDir_(workDir),
         compileLimits_(compileLimits),
         budgetSeconds_(budgetSeconds),
-        end_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                std::chrono::duration<double>(budgetSeconds))),
+        end_(secondsAfter(Clock::now(), budgetSeconds)),
         linkView_(viewOfTools(kit, workDir, sourceDirs(intake), true)),
         objects_(kTaskFiles.size()) {
     build_.tasks.resize(kTaskFiles.size());

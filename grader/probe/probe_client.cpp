@@ -10,7 +10,6 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
@@ -30,6 +29,7 @@ namespace a6::grader {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 using nlohmann::json;
+using process::secondsAfter;
 
 namespace {
 
@@ -117,12 +117,6 @@ json decodeAnswerBytes(const std::string& body) {
   return wire::fromBytes(body);  // "not MessagePack: ..." for what the check could not read
 }
 
-std::string seconds(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", s);
-  return text;
-}
-
 // The last `lines` lines of `text`, at most `bytes` bytes.
 std::string tail(const std::string& text, int lines, std::size_t bytes) {
   std::size_t end = text.find_last_not_of("\r\n");
@@ -156,12 +150,9 @@ struct Deadline {
   Clock::time_point hardEnd = Clock::time_point::max();
 
   Clock::time_point at() const {
-    Clock::time_point end = base;
-    if (answers != nullptr) {
-      const double extra = forceWaitAllowance(*answers - answersAtStart, limit);
-      end += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(extra));
-    }
-    return std::min(end, hardEnd);
+    if (answers == nullptr) return std::min(base, hardEnd);
+    return std::min(secondsAfter(base, forceWaitAllowance(*answers - answersAtStart, limit)),
+                    hardEnd);
   }
 };
 
@@ -460,7 +451,7 @@ struct ProbeClient::Impl {
                                "stopped"
                              : "the probe crashed: " + exit.describe();
     if (!alive && exit.kind == Exit::Kind::Signaled && exit.code == SIGXCPU) {
-      text += " (the limit is " + seconds(limits.cpuSeconds) + " s of CPU time per probe)";
+      text += " (the limit is " + secondsText(limits.cpuSeconds) + " s of CPU time per probe)";
     }
     const std::string last = tail(exit.output, 10, 2000);
     if (!last.empty()) text += "\nthe last lines it printed:\n" + last;
@@ -486,7 +477,7 @@ struct ProbeClient::Impl {
       }
       return failure(
           Fault::TimedOut,
-          "ran out of time: " + seconds(inCheck ? checkLimit : timeout) +
+          "ran out of time: " + secondsText(inCheck ? checkLimit : timeout) +
               (inCheck ? " s, this check's time limit (is there an endless loop, or a "
                          "loop that runs far too often?), so your code was stopped"
                        : " s, the time limit of this request, so your code was stopped"));
@@ -564,14 +555,11 @@ struct ProbeClient::Impl {
 
   // The running check's window, or this request's own.
   Deadline requestDeadline() const {
-    auto after = [](Clock::time_point t, double s) {
-      return t + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
-    };
     if (inCheck) {
-      return {after(checkStart, checkLimit), checkLimit, &forceAnswers, answersAtCheckStart,
+      return {secondsAfter(checkStart, checkLimit), checkLimit, &forceAnswers, answersAtCheckStart,
               checkHardEnd};
     }
-    return {after(Clock::now(), timeout), timeout, &forceAnswers, forceAnswers.load()};
+    return {secondsAfter(Clock::now(), timeout), timeout, &forceAnswers, forceAnswers.load()};
   }
 
   harness::Answer call(const harness::Request& request) {
