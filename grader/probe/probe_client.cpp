@@ -239,41 +239,32 @@ struct OwnedPipe {
 // whatever the probe does (a stop pipe wakes the thread).
 class ForceServer {
  public:
-  ForceServer() = default;
-  ForceServer(const ForceServer&) = delete;
-  ForceServer& operator=(const ForceServer&) = delete;
   ~ForceServer() {
-    closeFd(stop_[1]);  // the thread sees the stop pipe end
+    stop_.close(1);  // the thread sees the stop pipe end; the other ends close after the join
     if (thread_.joinable()) thread_.join();
-    for (int* fd : {&requests_[0], &requests_[1], &answers_[0], &answers_[1], &stop_[0]}) {
-      closeFd(*fd);
-    }
   }
 
   /// The pipes; false (with `error`) when they cannot be made.
   bool open(std::string& error) {
-    if (pipe2(requests_, O_CLOEXEC) == 0 && pipe2(answers_, O_CLOEXEC) == 0 &&
-        pipe2(stop_, O_CLOEXEC) == 0) {
-      return true;
-    }
+    if (requests_.open() && answers_.open() && stop_.open()) return true;
     error = std::string("pipe: ") + std::strerror(errno);
     return false;
   }
   /// The probe's ends, as SandboxSpec::mapFds.
   std::vector<std::pair<int, int>> probeFds() const {
-    return {{requests_[1], harness::forcechannel::kRequestFd},
-            {answers_[0], harness::forcechannel::kAnswerFd}};
+    return {{requests_.fd[1], harness::forcechannel::kRequestFd},
+            {answers_.fd[0], harness::forcechannel::kAnswerFd}};
   }
   /// Once the probe has its ends: closes ours of them and starts answering with `models`.
   /// False when no thread could be started.
   bool start(const ForceModel& models, std::atomic<std::size_t>* answers) {
-    closeFd(requests_[1]);
-    closeFd(answers_[0]);
+    requests_.close(1);
+    answers_.close(0);
     try {
       thread_ = std::thread([this, models, answers] {
-        harness::forcechannel::serve(requests_[0], answers_[1], stop_[0], models, answers);
-        closeFd(requests_[0]);  // a probe still waiting for an answer reads the end, not nothing
-        closeFd(answers_[1]);
+        harness::forcechannel::serve(requests_.fd[0], answers_.fd[1], stop_.fd[0], models, answers);
+        requests_.close(0);  // a probe still waiting for an answer reads the end, not nothing
+        answers_.close(1);
       });
     } catch (const std::system_error&) {
       return false;
@@ -282,11 +273,7 @@ class ForceServer {
   }
 
  private:
-  static void closeFd(int& fd) {
-    if (fd >= 0) ::close(fd);
-    fd = -1;
-  }
-  int requests_[2] = {-1, -1}, answers_[2] = {-1, -1}, stop_[2] = {-1, -1};
+  OwnedPipe requests_, answers_, stop_;
   std::thread thread_;
 };
 
