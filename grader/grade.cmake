@@ -28,11 +28,9 @@ target_link_libraries(a6_grading PUBLIC a6_suite a6_golden_checks a6_report a6_r
                                         a6_replay_view GTest::gtest)
 # The reference force models the probe of tasks 3, 5 and 7 asks for (they stay in a6_grade).
 target_compile_definitions(a6_grading PRIVATE A6_FORCE_MODELS="${A6_FORCE_MODELS}")
-target_compile_options(a6_grading PRIVATE ${A6_WARNINGS})
 
 add_executable(a6_grade ${CMAKE_CURRENT_SOURCE_DIR}/main.cpp)
 # (An object library's objects go only to what links it directly: the checks' too.)
 target_link_libraries(a6_grade PRIVATE a6_grading a6_suite a6_golden_checks CLI11::CLI11)
 a6_configured_path(a6_grade rubric "${A6_DEFAULT_RUBRIC}")
-target_compile_options(a6_grade PRIVATE ${A6_WARNINGS})
 add_dependencies(a6_grade a6_grader_kit)  # grading builds against the kit

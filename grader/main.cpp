@@ -11,12 +11,12 @@
 // read) or the rubric cannot be used (invalid, or not matching the checks).
 #include <sys/prctl.h>
 
-#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 #include "checks/checks.h"
+#include "common/command_line.h"
 #include "common/limits.h"
 #include "grading/grading.h"
 #include "rubric/rubric.h"
@@ -39,12 +39,6 @@ struct Options {
   bool listLimits = false;
   std::string publicRubric;
 };
-
-fs::path besideProgram(const std::string& name) {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path(name) : self.parent_path() / name;
-}
 
 fs::path defaultRubric() {
   if (fs::exists(a6::paths::rubric)) return a6::paths::rubric;
@@ -170,14 +164,7 @@ int main(int argc, char** argv) {
   addInputOptions(app, options);
   addRunOptions(app, options.grading);
   addCommandOptions(app, options);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
+  if (const std::optional<int> status = parseOrExit(app, argc, argv)) return *status;
   try {
     return dispatch(options);
   } catch (const std::exception& e) {

@@ -277,14 +277,12 @@ class InProcess final : public StudentCode {
         return;
       }
       const float invDt = 1.0f / scene->dt;
-      for (b2Body* body : scene->bodies) {
+      for (std::size_t k = 0; k < scene->bodies.size(); ++k) {
+        const b2Body* body = scene->bodies[k];
         result.bodies.push_back(
-            {"", body->GetMass(),
+            {scene->bodyNames[k], body->GetMass(),
              body->GetInertia() - body->GetMass() * body->GetLocalCenter().LengthSquared(),
              toVec(body->GetLocalCenter())});
-      }
-      for (std::size_t k = 0; k < scene->bodies.size(); ++k) {
-        result.bodies[k].name = scene->bodyNames[k];
       }
       result.builtJoints = describeAll(*scene, invDt);
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
@@ -360,17 +361,11 @@ double decodeDouble(const json& j) {
     if (s == "-inf") return -std::numeric_limits<double>::infinity();
     if (s == "nan") return fromBits(kPositiveNaN);
     if (s == "-nan") return fromBits(kNegativeNaN);
-    if (s.size() == 22 && s.compare(0, 6, "nan:0x") == 0) {
-      std::uint64_t bits = 0;
-      bool hex = true;
-      for (std::size_t k = 6; k < s.size(); ++k) {
-        const char c = s[k];
-        const int digit = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
-        if (digit < 0) hex = false;
-        bits = bits << 4 | static_cast<std::uint64_t>(digit < 0 ? 0 : digit);
-      }
-      const double x = fromBits(bits);
-      if (hex && std::isnan(x)) return x;
+    if (s.size() == 22 && s.compare(0, 6, "nan:0x") == 0 &&
+        s.find_first_not_of("0123456789abcdef", 6) == std::string::npos) {
+      std::uint64_t bits = 0;  // 16 lower-case hex digits: always read whole
+      std::from_chars(s.data() + 6, s.data() + s.size(), bits, 16);
+      if (const double x = fromBits(bits); std::isnan(x)) return x;
     }
     throw Malformed("expected a number, \"inf\", \"-inf\" or a NaN, got the string \"" +
                     textOf(j).substr(0, 40) + "\"");

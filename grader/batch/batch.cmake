@@ -8,7 +8,6 @@ target_include_directories(a6_batch_core PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(YAMLCPP REQUIRED IMPORTED_TARGET yaml-cpp>=0.7)  # submission_metadata.yml
 target_link_libraries(a6_batch_core PRIVATE nlohmann_json::nlohmann_json PkgConfig::YAMLCPP)
-target_compile_options(a6_batch_core PRIVATE ${A6_WARNINGS})
 
 add_executable(a6_batch ${CMAKE_CURRENT_SOURCE_DIR}/batch/batch_main.cpp
                         ${CMAKE_CURRENT_SOURCE_DIR}/batch/command_line.cpp
@@ -19,7 +18,6 @@ target_link_libraries(a6_batch PRIVATE a6_batch_core a6_insights_core a6_process
 # changed rubric regrades.
 a6_configured_path(a6_batch rubric "${A6_DEFAULT_RUBRIC}")
 a6_configured_path(a6_batch starter "${PROJECT_SOURCE_DIR}/starter")
-target_compile_options(a6_batch PRIVATE ${A6_WARNINGS})
 if(TARGET a6_grade)
   add_dependencies(a6_batch a6_grade)  # found beside a6_batch
 endif()

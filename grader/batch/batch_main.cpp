@@ -49,6 +49,7 @@
 #include <cstring>
 #include <iomanip>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -72,6 +73,7 @@ using namespace a6::grader::batch;
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using a6::grader::process::secondsAfter;
 using a6::grader::process::secondsSince;
 
 constexpr const char* kMarker = "batch.json";
@@ -292,9 +294,7 @@ class Batch {
     }
     setpgid(pid, pid);  // here too: a time limit may kill the group before the child set it
     const auto now = Clock::now();
-    running_.push_back({i, pid, now,
-                        now + std::chrono::duration_cast<Clock::duration>(
-                                  std::chrono::duration<double>(o_.timeout))});
+    running_.push_back({i, pid, now, secondsAfter(now, o_.timeout)});
     return true;
   }
 
@@ -484,11 +484,8 @@ class Batch {
     out << "  batch wall time " << duration(wall) << " (" << fixed(wall, 1) << " s) with -j "
         << jobs;
     if (!ranSeconds_.empty()) {
-      double sum = 0, max = 0;
-      for (const double s : ranSeconds_) {
-        sum += s;
-        max = std::max(max, s);
-      }
+      const double sum = std::accumulate(ranSeconds_.begin(), ranSeconds_.end(), 0.0);
+      const double max = *std::max_element(ranSeconds_.begin(), ranSeconds_.end());
       out << "; per submission: mean " << fixed(sum / static_cast<double>(ranSeconds_.size()), 1)
           << " s, max " << fixed(max, 1) << " s (" << ranSeconds_.size()
           << " gradings in this run)";

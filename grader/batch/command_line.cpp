@@ -6,12 +6,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstring>
 #include <sstream>
 #include <system_error>
 
+#include "common/command_line.h"
 #include "common/read_all.h"
 
 namespace a6::paths {
@@ -24,12 +24,6 @@ namespace a6::grader::batch {
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path besideProgram(const std::string& name) {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path(name) : self.parent_path() / name;
-}
 
 // `a6_grade --check-rubric --rubric FILE`: "" when the rubric can be used, else what a6_grade
 // said (each problem with its line and fix).
@@ -92,15 +86,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, Options& options) {
   app.add_flag("--similarity", options.similarity,
                "compare the submissions' task files with sim_c++ (listed in insights.html)");
   app.add_option("--starter", options.starter, "the starter files the similarity discounts");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
-  return std::nullopt;
+  return parseOrExit(app, argc, argv);
 }
 
 std::string checkPaths(const Options& options, fs::path& input, fs::path& out, fs::path& grader) {

@@ -33,11 +33,6 @@ std::string lower(std::string s) {
   return s;
 }
 
-bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() &&
-         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 // The archive extensions a6_grade's intake reads, longest first.
 const std::vector<std::string> kArchiveExtensions = {".tar.gz", ".tar.bz2", ".tar.xz",
                                                      ".tgz",    ".zip",     ".tar"};
@@ -46,7 +41,7 @@ const std::vector<std::string> kArchiveExtensions = {".tar.gz", ".tar.bz2", ".ta
 std::string archiveExtension(const std::string& name) {
   const std::string l = lower(name);
   for (const std::string& ext : kArchiveExtensions) {
-    if (l.size() > ext.size() && endsWith(l, ext)) return ext;
+    if (l.size() > ext.size() && l.compare(l.size() - ext.size(), ext.size(), ext) == 0) return ext;
   }
   return "";
 }
@@ -458,17 +453,9 @@ Inventory findSubmissions(const fs::path& input, Layout layout, const fs::path& 
     inv.error = input.string() + " is not a folder";
     return inv;
   }
-  switch (layout) {
-    case Layout::Plain:
-      findPlain(input, exclude, inv);
-      break;
-    case Layout::Gradescope:
-      findGradescope(input, exclude, inv);
-      break;
-    case Layout::Canvas:
-      findCanvas(input, exclude, inv);
-      break;
-  }
+  using Find = void (*)(const fs::path&, const fs::path&, Inventory&);
+  static const Find kFinders[] = {findPlain, findGradescope, findCanvas};  // in Layout's order
+  kFinders[static_cast<int>(layout)](input, exclude, inv);
   assignKeys(inv.submissions, inv.notes);
   return inv;
 }

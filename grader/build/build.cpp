@@ -11,13 +11,13 @@
 #include "build/build.h"
 
 #include <elf.h>
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -37,6 +37,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+using process::secondsAfter;
 using process::secondsSince;
 
 // ---- reading what the compiler and the linker said ----
@@ -142,25 +143,6 @@ std::string runsBeforeFilter(const fs::path& object) {
   }
   return "";
 }
-// The bytes of a regular file, read without following a link, or nothing.
-std::optional<std::string> readRegularFile(const fs::path& file) {
-  const int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) return std::nullopt;
-  struct stat st;
-  std::optional<std::string> bytes;
-  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
-    std::string data(static_cast<std::size_t>(st.st_size), '\0');
-    std::size_t got = 0;
-    ssize_t n = 1;
-    while (got < data.size() && (n = ::read(fd, data.data() + got, data.size() - got)) > 0) {
-      got += static_cast<std::size_t>(n);
-    }
-    if (got == data.size()) bytes = std::move(data);
-  }
-  ::close(fd);
-  return bytes;
-}
-
 // A tool the machine, not the code, may have ended: killed by a SIGKILL neither the grader nor
 // its CPU limit sent, stopped at its wall-clock limit (a busy machine), or never started.
 bool endedByTheMachine(const Exit& e, const Limits& limits = defaultCompileLimits()) {
@@ -348,8 +330,7 @@ class ProbeBuilder {
         workDir_(workDir),
         compileLimits_(compileLimits),
         budgetSeconds_(budgetSeconds),
-        end_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                std::chrono::duration<double>(budgetSeconds))),
+        end_(secondsAfter(Clock::now(), budgetSeconds)),
         linkView_(viewOfTools(kit, workDir, sourceDirs(intake), true)),
         objects_(kTaskFiles.size()) {
     build_.tasks.resize(kTaskFiles.size());
@@ -446,8 +427,9 @@ class ProbeBuilder {
     TaskBuild& task = build_.tasks[i];
     if (kit_.knownObjects.empty()) return false;
     const fs::path known = kit_.knownObjects / (stem(task.file) + ".o");
-    const std::optional<std::string> ours = readRegularFile(kit_.knownObjects / task.file);
-    if (!ours || readRegularFile(source) != ours) return false;
+    std::string why;  // a text that cannot be read is no known one
+    const auto ours = readNoFollow(kit_.knownObjects / task.file, SIZE_MAX - 1, why);
+    if (!ours || readNoFollow(source, SIZE_MAX - 1, why) != ours) return false;
     const auto t0 = Clock::now();
     const fs::path dir = workDir_ / "obj" / stem(task.file);
     const fs::path object = dir / (stem(task.file) + ".o");

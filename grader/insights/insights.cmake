@@ -11,10 +11,8 @@ a6_embedded_text(a6_insights_core sort_tables_js
                  ${CMAKE_CURRENT_SOURCE_DIR}/insights/assets/sort_tables.js)
 target_link_libraries(a6_insights_core PUBLIC a6_batch_core a6_process a6_intake
                       PRIVATE nlohmann_json::nlohmann_json)
-target_compile_options(a6_insights_core PRIVATE ${A6_WARNINGS})
 
 add_executable(a6_insights ${CMAKE_CURRENT_SOURCE_DIR}/insights/insights_main.cpp)
 target_link_libraries(a6_insights PRIVATE a6_insights_core CLI11::CLI11)
 # The starter files, which the similarity discounts.
 a6_configured_path(a6_insights starter "${PROJECT_SOURCE_DIR}/starter")
-target_compile_options(a6_insights PRIVATE ${A6_WARNINGS})

@@ -5,11 +5,11 @@
 // FOLDER: a6_batch's output, or Gradescope's "Export Submissions", unzipped (only an export holds
 // the submitted files that --similarity compares).
 // Exit status: 0 page written; 1 it could not be written; 2 a bad command line or FOLDER.
-#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
+#include "common/command_line.h"
 #include "insights/page.h"
 
 namespace a6::paths {
@@ -30,11 +30,7 @@ int main(int argc, char** argv) {
   app.add_flag("--similarity", similarity, "compare the exported submissions' task files");
   app.add_option("--starter", starter, "the starter files, discounted by the comparison");
   app.add_option("--threshold", threshold, "percent of a file's own code shared to list a pair");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  if (const std::optional<int> status = a6::grader::parseOrExit(app, argc, argv)) return *status;
   std::error_code ec;
   if (!fs::is_directory(folder, ec)) {
     std::fprintf(stderr, "a6_insights: %s is not a folder\n", folder.c_str());

@@ -6,4 +6,3 @@ add_library(a6_intake STATIC ${CMAKE_CURRENT_SOURCE_DIR}/intake/intake.cpp
                              ${CMAKE_CURRENT_SOURCE_DIR}/intake/entries.cpp)
 target_include_directories(a6_intake PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_intake PRIVATE LibArchive::LibArchive)
-target_compile_options(a6_intake PRIVATE ${A6_WARNINGS})

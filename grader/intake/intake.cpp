@@ -272,37 +272,6 @@ Intake readArchive(const fs::path& submission, const fs::path& dest, const Intak
 
 // ---- folders (std::filesystem, links never followed) ----
 
-// Reads a regular file without following a link at its name, at most `cap` + 1 bytes.
-std::optional<std::string> readNoFollow(const fs::path& path, std::size_t cap, std::string& why) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) {
-    why = std::strerror(errno);
-    return std::nullopt;
-  }
-  struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    ::close(fd);
-    why = "not a regular file";
-    return std::nullopt;
-  }
-  std::string data;
-  char buf[16 << 10];
-  for (;;) {
-    const ssize_t n = ::read(fd, buf, sizeof buf);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      why = std::strerror(errno);
-      ::close(fd);
-      return std::nullopt;
-    }
-    if (n == 0) break;
-    data.append(buf, static_cast<std::size_t>(n));
-    if (data.size() > cap) break;
-  }
-  ::close(fd);
-  return data;
-}
-
 // Whether the walk of a folder stops before its next entry (a read error, the limit), noted.
 bool folderWalkEnds(Collector& c, const std::error_code& ec, std::size_t entries,
                     const IntakeLimits& limits) {
@@ -393,6 +362,36 @@ Intake readFolder(const fs::path& root, const fs::path& dest, const IntakeLimits
 }
 
 }  // namespace
+
+std::optional<std::string> readNoFollow(const fs::path& path, std::size_t cap, std::string& why) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    why = std::strerror(errno);
+    return std::nullopt;
+  }
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    why = "not a regular file";
+    return std::nullopt;
+  }
+  std::string data;
+  char buf[16 << 10];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      why = std::strerror(errno);
+      ::close(fd);
+      return std::nullopt;
+    }
+    if (n == 0) break;
+    data.append(buf, static_cast<std::size_t>(n));
+    if (data.size() > cap) break;
+  }
+  ::close(fd);
+  return data;
+}
 
 Intake takeSubmission(const std::filesystem::path& submission, const std::filesystem::path& dest,
                       const IntakeLimits& limits) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,5 +50,10 @@ struct IntakeLimits {
 /// a note).
 Intake takeSubmission(const std::filesystem::path& submission, const std::filesystem::path& dest,
                       const IntakeLimits& limits = {});
+
+/// The bytes of the regular file `path`, read without following a link at its name, at most
+/// `cap` + 1 of them; nothing (and `why`) when it cannot be read or is no regular file.
+std::optional<std::string> readNoFollow(const std::filesystem::path& path, std::size_t cap,
+                                        std::string& why);
 
 }  // namespace a6::grader

@@ -7,7 +7,6 @@
 add_library(a6_wire STATIC ${PROJECT_SOURCE_DIR}/framework/harness/wire.cpp
                            ${PROJECT_SOURCE_DIR}/framework/harness/force_channel.cpp)
 target_link_libraries(a6_wire PUBLIC a6_harness_api nlohmann_json::nlohmann_json)
-target_compile_options(a6_wire PRIVATE ${A6_WARNINGS})
 
 # The probe's main, built twice; neither holds a reference model. a6_probe_main serves every
 # request; a6_probe_main_models is linked into a second probe that serves only the requests of
@@ -16,10 +15,8 @@ target_compile_options(a6_wire PRIVATE ${A6_WARNINGS})
 add_library(a6_probe_main OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_main.cpp)
 add_library(a6_probe_main_models OBJECT ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_main.cpp)
 target_compile_definitions(a6_probe_main_models PRIVATE A6_REMOTE_FORCES)
-foreach(main a6_probe_main a6_probe_main_models)
-  target_link_libraries(${main} PRIVATE a6_harness_api nlohmann_json::nlohmann_json)
-  target_compile_options(${main} PRIVATE ${A6_WARNINGS})
-endforeach()
+target_link_libraries(a6_probe_main PRIVATE a6_harness_api nlohmann_json::nlohmann_json)
+target_link_libraries(a6_probe_main_models PRIVATE a6_harness_api nlohmann_json::nlohmann_json)
 
 # The kit: everything a probe links besides its main and the seven student objects.
 add_library(a6_probe_kit STATIC $<TARGET_OBJECTS:a6_framework> $<TARGET_OBJECTS:a6_core>
@@ -67,4 +64,3 @@ endforeach()
 add_library(a6_probe_client STATIC ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_client.cpp
                                    ${CMAKE_CURRENT_SOURCE_DIR}/probe/probe_pair.cpp)
 target_link_libraries(a6_probe_client PUBLIC a6_sandbox a6_wire a6_harness_api)
-target_compile_options(a6_probe_client PRIVATE ${A6_WARNINGS})

@@ -10,7 +10,6 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
@@ -30,6 +29,7 @@ namespace a6::grader {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 using nlohmann::json;
+using process::secondsAfter;
 
 namespace {
 
@@ -117,12 +117,6 @@ json decodeAnswerBytes(const std::string& body) {
   return wire::fromBytes(body);  // "not MessagePack: ..." for what the check could not read
 }
 
-std::string seconds(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", s);
-  return text;
-}
-
 // The last `lines` lines of `text`, at most `bytes` bytes.
 std::string tail(const std::string& text, int lines, std::size_t bytes) {
   std::size_t end = text.find_last_not_of("\r\n");
@@ -156,12 +150,9 @@ struct Deadline {
   Clock::time_point hardEnd = Clock::time_point::max();
 
   Clock::time_point at() const {
-    Clock::time_point end = base;
-    if (answers != nullptr) {
-      const double extra = forceWaitAllowance(*answers - answersAtStart, limit);
-      end += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(extra));
-    }
-    return std::min(end, hardEnd);
+    if (answers == nullptr) return std::min(base, hardEnd);
+    return std::min(secondsAfter(base, forceWaitAllowance(*answers - answersAtStart, limit)),
+                    hardEnd);
   }
 };
 
@@ -248,41 +239,32 @@ struct OwnedPipe {
 // whatever the probe does (a stop pipe wakes the thread).
 class ForceServer {
  public:
-  ForceServer() = default;
-  ForceServer(const ForceServer&) = delete;
-  ForceServer& operator=(const ForceServer&) = delete;
   ~ForceServer() {
-    closeFd(stop_[1]);  // the thread sees the stop pipe end
+    stop_.close(1);  // the thread sees the stop pipe end; the other ends close after the join
     if (thread_.joinable()) thread_.join();
-    for (int* fd : {&requests_[0], &requests_[1], &answers_[0], &answers_[1], &stop_[0]}) {
-      closeFd(*fd);
-    }
   }
 
   /// The pipes; false (with `error`) when they cannot be made.
   bool open(std::string& error) {
-    if (pipe2(requests_, O_CLOEXEC) == 0 && pipe2(answers_, O_CLOEXEC) == 0 &&
-        pipe2(stop_, O_CLOEXEC) == 0) {
-      return true;
-    }
+    if (requests_.open() && answers_.open() && stop_.open()) return true;
     error = std::string("pipe: ") + std::strerror(errno);
     return false;
   }
   /// The probe's ends, as SandboxSpec::mapFds.
   std::vector<std::pair<int, int>> probeFds() const {
-    return {{requests_[1], harness::forcechannel::kRequestFd},
-            {answers_[0], harness::forcechannel::kAnswerFd}};
+    return {{requests_.fd[1], harness::forcechannel::kRequestFd},
+            {answers_.fd[0], harness::forcechannel::kAnswerFd}};
   }
   /// Once the probe has its ends: closes ours of them and starts answering with `models`.
   /// False when no thread could be started.
   bool start(const ForceModel& models, std::atomic<std::size_t>* answers) {
-    closeFd(requests_[1]);
-    closeFd(answers_[0]);
+    requests_.close(1);
+    answers_.close(0);
     try {
       thread_ = std::thread([this, models, answers] {
-        harness::forcechannel::serve(requests_[0], answers_[1], stop_[0], models, answers);
-        closeFd(requests_[0]);  // a probe still waiting for an answer reads the end, not nothing
-        closeFd(answers_[1]);
+        harness::forcechannel::serve(requests_.fd[0], answers_.fd[1], stop_.fd[0], models, answers);
+        requests_.close(0);  // a probe still waiting for an answer reads the end, not nothing
+        answers_.close(1);
       });
     } catch (const std::system_error&) {
       return false;
@@ -291,11 +273,7 @@ class ForceServer {
   }
 
  private:
-  static void closeFd(int& fd) {
-    if (fd >= 0) ::close(fd);
-    fd = -1;
-  }
-  int requests_[2] = {-1, -1}, answers_[2] = {-1, -1}, stop_[2] = {-1, -1};
+  OwnedPipe requests_, answers_, stop_;
   std::thread thread_;
 };
 
@@ -460,7 +438,7 @@ struct ProbeClient::Impl {
                                "stopped"
                              : "the probe crashed: " + exit.describe();
     if (!alive && exit.kind == Exit::Kind::Signaled && exit.code == SIGXCPU) {
-      text += " (the limit is " + seconds(limits.cpuSeconds) + " s of CPU time per probe)";
+      text += " (the limit is " + secondsText(limits.cpuSeconds) + " s of CPU time per probe)";
     }
     const std::string last = tail(exit.output, 10, 2000);
     if (!last.empty()) text += "\nthe last lines it printed:\n" + last;
@@ -486,7 +464,7 @@ struct ProbeClient::Impl {
       }
       return failure(
           Fault::TimedOut,
-          "ran out of time: " + seconds(inCheck ? checkLimit : timeout) +
+          "ran out of time: " + secondsText(inCheck ? checkLimit : timeout) +
               (inCheck ? " s, this check's time limit (is there an endless loop, or a "
                          "loop that runs far too often?), so your code was stopped"
                        : " s, the time limit of this request, so your code was stopped"));
@@ -564,14 +542,11 @@ struct ProbeClient::Impl {
 
   // The running check's window, or this request's own.
   Deadline requestDeadline() const {
-    auto after = [](Clock::time_point t, double s) {
-      return t + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
-    };
     if (inCheck) {
-      return {after(checkStart, checkLimit), checkLimit, &forceAnswers, answersAtCheckStart,
+      return {secondsAfter(checkStart, checkLimit), checkLimit, &forceAnswers, answersAtCheckStart,
               checkHardEnd};
     }
-    return {after(Clock::now(), timeout), timeout, &forceAnswers, forceAnswers.load()};
+    return {secondsAfter(Clock::now(), timeout), timeout, &forceAnswers, forceAnswers.load()};
   }
 
   harness::Answer call(const harness::Request& request) {

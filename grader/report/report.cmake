@@ -9,7 +9,6 @@ a6_embedded_text(a6_report report_css ${CMAKE_CURRENT_SOURCE_DIR}/report/assets/
 a6_embedded_text(a6_report replay_player_js
                  ${CMAKE_CURRENT_SOURCE_DIR}/report/assets/replay_player.js)
 target_link_libraries(a6_report PUBLIC a6_score PRIVATE a6_replay nlohmann_json::nlohmann_json)
-target_compile_options(a6_report PRIVATE ${A6_WARNINGS})
 
 # The default rubric, beside the grader in the build tree (the packaging step copies it too).
 set(A6_DEFAULT_RUBRIC ${CMAKE_CURRENT_SOURCE_DIR}/rubric.toml)

@@ -4,4 +4,3 @@
 add_library(a6_rubric STATIC ${CMAKE_CURRENT_SOURCE_DIR}/rubric/rubric.cpp)
 target_include_directories(a6_rubric PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_rubric PRIVATE tomlplusplus::tomlplusplus)
-target_compile_options(a6_rubric PRIVATE ${A6_WARNINGS})

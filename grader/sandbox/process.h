@@ -28,6 +28,12 @@ namespace a6::grader::process {
 inline double secondsSince(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
+/// The time point `seconds` after `t` (deadlines).
+inline std::chrono::steady_clock::time_point secondsAfter(std::chrono::steady_clock::time_point t,
+                                                          double seconds) {
+  return t + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                 std::chrono::duration<double>(seconds));
+}
 
 /// One process, as /proc/PID/status describes it.
 struct Info {

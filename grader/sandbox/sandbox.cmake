@@ -6,7 +6,6 @@ find_package(Threads REQUIRED)
 
 add_library(a6_process STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/process.cpp)
 target_include_directories(a6_process PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_compile_options(a6_process PRIVATE ${A6_WARNINGS})
 
 add_library(a6_sandbox STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/sandbox.cpp
                               ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/output.cpp
@@ -15,10 +14,8 @@ add_library(a6_sandbox STATIC ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/sandbox.cpp
                               ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/filter.cpp)
 target_include_directories(a6_sandbox PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_sandbox PUBLIC a6_process PkgConfig::SECCOMP Threads::Threads)
-target_compile_options(a6_sandbox PRIVATE ${A6_WARNINGS})
 
 # The init of each sandboxed command's pid namespace (keeper_main.cpp).
 add_executable(a6_keeper ${CMAKE_CURRENT_SOURCE_DIR}/sandbox/keeper_main.cpp)
-target_compile_options(a6_keeper PRIVATE ${A6_WARNINGS})
 add_dependencies(a6_sandbox a6_keeper)
 a6_configured_path(a6_sandbox keeper "$<TARGET_FILE:a6_keeper>")

@@ -19,7 +19,6 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
-#include <cstdio>
 #include <cstring>
 #include <map>
 #include <mutex>
@@ -37,16 +36,11 @@ namespace a6::grader {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+using process::secondsAfter;
 using process::secondsSince;
 using namespace sandboxing;  // NOLINT: the sandbox's own inside (plan.h)
 
 namespace {
-
-std::string formatSeconds(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", s);
-  return text;
-}
 
 // A started child: its pid, its output pipe, and what the setup said.
 struct Started {
@@ -296,7 +290,7 @@ std::string Exit::describe() const {
              (text != nullptr ? text : "signal " + std::to_string(code));
     }
     case Kind::TimedOut:
-      return "timed out after " + formatSeconds(wallSeconds) + " s and was killed";
+      return "timed out after " + secondsText(wallSeconds) + " s and was killed";
     case Kind::FailedToStart:
       return "failed to start: " + error;
   }
@@ -323,9 +317,7 @@ Exit runSandboxed(const SandboxSpec& spec) {
   }
   Sink sink;
   sink.cap = spec.limits.outputBytes;
-  const auto deadline =
-      begin + std::chrono::duration_cast<Clock::duration>(
-                  std::chrono::duration<double>(std::max(0.0, spec.limits.wallSeconds)));
+  const auto deadline = secondsAfter(begin, std::max(0.0, spec.limits.wallSeconds));
   bool outOpen = true;
   const bool timedOut = !readUntilEnd(s.pid, s.outFd, deadline, sink, outOpen);
   const int status = timedOut ? killAndReap(s.pid) : killAndReap(s.pid, &exit.cpuSeconds);

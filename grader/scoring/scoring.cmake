@@ -3,4 +3,3 @@
 add_library(a6_score STATIC ${CMAKE_CURRENT_SOURCE_DIR}/scoring/score.cpp)
 target_include_directories(a6_score PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(a6_score PUBLIC a6_rubric)
-target_compile_options(a6_score PRIVATE ${A6_WARNINGS})
