@@ -64,10 +64,10 @@ void step(System& s, double dt, const StepForm& form) {
   for (Particle& p : s.particles) {
     if (p.pinned && form.pins == 0) continue;
     const bool moveV = !p.pinned || form.pins != 3, moveX = !p.pinned || form.pins != 2;
-    const Vec2 dv = (form.noMassDivision ? p.f : Vec2(p.f / p.m)) * dt;
-    if (form.positionFirst && moveX) p.x += p.v * dt;
+    const Vec2 dv = form.noMassDivision ? Vec2(p.f * dt) : referenceVelocityChange(p, dt);
+    if (form.positionFirst && moveX) p.x += referencePositionChange(p, dt);
     if (moveV) p.v += dv;
-    if (!form.positionFirst && moveX) p.x += p.v * dt;
+    if (!form.positionFirst && moveX) p.x += referencePositionChange(p, dt);
   }
 }
 
@@ -93,9 +93,9 @@ void update(std::vector<Particle>& particles, const ParticleRunRequest& r, Parti
                cooling = flaw == ParticleFlaw::CoolingWrongSign ? -r.coolingRate : r.coolingRate;
   for (Particle& p : particles) {
     p.f = referenceExternalForce(p, r.env);
-    if (flaw == ParticleFlaw::PositionFirst) p.x += p.v * dt;
-    p.v += p.f / p.m * dt;
-    if (flaw != ParticleFlaw::PositionFirst) p.x += p.v * dt;
+    if (flaw == ParticleFlaw::PositionFirst) p.x += referencePositionChange(p, dt);
+    p.v += referenceVelocityChange(p, dt);
+    if (flaw != ParticleFlaw::PositionFirst) p.x += referencePositionChange(p, dt);
     p.temperature += referenceCooling(p, r.env, cooling, dt);
     p.age += dt;
   }
@@ -174,9 +174,9 @@ void step(std::vector<Particle>& ps, const std::vector<SpringData>& springs, con
     Particle& p = ps[i];
     if (p.pinned) continue;
     const Vec2 change = dv.segment<2>(2 * static_cast<Eigen::Index>(i));
-    if (form.positionFirst) p.x += p.v * h;
+    if (form.positionFirst) p.x += referencePositionChange(p, h);
     p.v = form.deltaVAsVelocity ? change : Vec2(p.v + change);
-    if (!form.positionFirst) p.x += p.v * h;
+    if (!form.positionFirst) p.x += referencePositionChange(p, h);
   }
 }
 

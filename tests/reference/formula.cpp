@@ -188,7 +188,14 @@ class Parser {
 }  // namespace
 
 Value evaluateFormula(const std::string& text, const Bindings& bindings) {
-  return Parser(text, bindings).parse();
+  // An update, "v += f / m dt": the symbol's value plus the right side's.
+  const std::size_t update = text.find("+=");
+  if (update == std::string::npos) return Parser(text, bindings).parse();
+  const Value before = Parser(text.substr(0, update), bindings).parse();
+  const Value change = Parser(text.substr(update + 2), bindings).parse();
+  if (before.rows() != change.rows() || before.cols() != change.cols())
+    throw std::invalid_argument("an update of mismatched shapes in \"" + text + "\"");
+  return before + change;
 }
 
 std::string withoutBlanks(const std::string& text) {

@@ -5,7 +5,8 @@
 //
 // Written: numbers, symbols ([A-Za-z][A-Za-z0-9_]*), + - * /, a product by juxtaposition (a
 // number times anything, or a matrix product: e eᵀ), · (dot), |x| (a number's absolute value,
-// a vector's length), x² (a number squared, a vector's squared length), xᵀ, (a, b) (a vector).
+// a vector's length), x² (a number squared, a vector's squared length), xᵀ, (a, b) (a vector),
+// and an update, "v += f / m dt": the symbol's value plus the change.
 #pragma once
 
 #include <Eigen/Dense>

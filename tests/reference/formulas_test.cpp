@@ -114,6 +114,9 @@ std::vector<Law> springLaws() {
 std::vector<Law> particleLaws() {
   const std::vector<const char*> forcesReaders = {"docs/handout.md", "starter/forces.cpp",
                                                   "framework/include/a6/forces.h"};
+  const std::vector<const char*> stepReaders = {
+      "docs/handout.md", "starter/time_stepping.cpp", "starter/particle_system.cpp",
+      "framework/include/a6/mass_spring_system.h", "framework/include/a6/particle_system.h"};
   std::vector<const char*> viewerReaders = forcesReaders;
   viewerReaders.insert(viewerReaders.end(), {"framework/viewer/viewer.cpp", "docs/viewer.md"});
   return {
@@ -140,6 +143,21 @@ std::vector<Law> particleLaws() {
          c.normal = d.vec(1).normalized();
          x.symbols["d"] = scalar(c.depth), x.symbols["n"] = c.normal;
          return Pair{x.symbols, referenceRepulsion(x.env, c)};
+       }},
+      {"the velocity step", kVelocityStepFormula, stepReaders,
+       [](Draw& d) {
+         ParticleDraw x = drawParticle(d);
+         x.p.f = d.vec(50);
+         const double dt = d.uniform(1e-3, 0.1);
+         x.symbols["f"] = x.p.f, x.symbols["dt"] = scalar(dt);
+         return Pair{x.symbols, x.p.v + referenceVelocityChange(x.p, dt)};
+       }},
+      {"the position step", kPositionStepFormula, stepReaders,
+       [](Draw& d) {
+         ParticleDraw x = drawParticle(d);
+         const double dt = d.uniform(1e-3, 0.1);
+         x.symbols["x"] = x.p.x, x.symbols["dt"] = scalar(dt);
+         return Pair{x.symbols, x.p.x + referencePositionChange(x.p, dt)};
        }},
       {"cooling",
        kCoolingFormula,
@@ -211,6 +229,8 @@ TEST(ReferenceFormulas, AWrongFormulaIsToldApartFromTheCode) {
       {"buoyancy", "b (T_air - T) (0, 1)"},
       {"drag", "-k_d |v| v"},
       {"repulsion", "k_d d n"},
+      {"the velocity step", "v += f dt"},
+      {"the position step", "x += v"},
       {"cooling", "-k_c T dt"}};
   ASSERT_EQ(wrong.size(), all.size());
   for (const Law& law : all) {
@@ -231,6 +251,7 @@ TEST(ReferenceFormulas, TheNotationReadsAsTheSlideMeansIt) {
   EXPECT_THROW(evaluateFormula("k w", b), std::invalid_argument);  // w has no value
   EXPECT_THROW(evaluateFormula("(k", b), std::invalid_argument);
   EXPECT_THROW(evaluateFormula("v + k", b), std::invalid_argument);
+  EXPECT_TRUE(evaluateFormula("v += k v", b).isApprox(Eigen::Vector2d(9, 12)));
 }
 
 }  // namespace
