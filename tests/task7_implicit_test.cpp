@@ -68,7 +68,7 @@ JacobiansResult jacobiansOf(const SpringForceRequest& r) {
 }
 
 constexpr char kSignHint[] =
-    "dfdx = -ks (e eᵀ + (1 - l0/l)(I - e eᵀ)): along the spring its stiffness is -ks, across it "
+    "dfdx = -ks (e eᵀ + (1 - l0/l) (I - e eᵀ)): along the spring its stiffness is -ks, across it "
     "-ks (1 - l0/l); dfdv = -kd e eᵀ. Both are NEGATIVE: a spring pulls back";
 
 // Runs the Jacobians of r and compares them with hand-computed values.
@@ -87,7 +87,7 @@ TEST(Task7Implicit, JacobianOfAStretchedSpringAlongX) {
   dfdx << -90, 0, 0, -30;
   expectJacobians(r, dfdx, Mat2::Zero(),
                   "across the spring a stretched spring pulls sideways with -ks (1 - l0/l): the "
-                  "(1 - l0/l)(I - e eᵀ) term");
+                  "(1 - l0/l) (I - e eᵀ) term");
 }
 
 TEST(Task7Implicit, JacobianOfADiagonalSpring) {

@@ -116,11 +116,11 @@ const std::vector<Form<Mat2>>& dfdxForms() {
        [](const SpringForceRequest& r, const Geometry&) -> Mat2 {
          return referenceSpringJacobians(r.p1.x, r.p2.x, r.restLength, r.ks, r.kd).dfdx;
        }},
-      {"dfdx_sign", "has the wrong sign", "+ks (e eᵀ + (1 - l0/l)(I - e eᵀ))",
+      {"dfdx_sign", "has the wrong sign", "+ks (e eᵀ + (1 - l0/l) (I - e eᵀ))",
        [](const SpringForceRequest& r, const Geometry& g) -> Mat2 {
          return r.ks * (g.P + (1 - r.restLength / g.l) * g.Q);
        }},
-      {"dfdx_no_across", "leaves out the across-the-spring term -ks (1 - l0/l)(I - e eᵀ)",
+      {"dfdx_no_across", "leaves out the across-the-spring term -ks (1 - l0/l) (I - e eᵀ)",
        "-ks e eᵀ",
        [](const SpringForceRequest& r, const Geometry& g) -> Mat2 { return -r.ks * g.P; }},
       {"dfdx_isotropic", "uses the across-the-spring stiffness (1 - l0/l) along the spring too",
@@ -128,11 +128,11 @@ const std::vector<Form<Mat2>>& dfdxForms() {
        [](const SpringForceRequest& r, const Geometry& g) -> Mat2 {
          return -r.ks * (1 - r.restLength / g.l) * Mat2::Identity();
        }},
-      {"dfdx_ratio_inverted", "uses l/l0 where it needs l0/l", "-ks (e eᵀ + (1 - l/l0)(I - e eᵀ))",
+      {"dfdx_ratio_inverted", "uses l/l0 where it needs l0/l", "-ks (e eᵀ + (1 - l/l0) (I - e eᵀ))",
        [](const SpringForceRequest& r, const Geometry& g) -> Mat2 {
          return -r.ks * (g.P + (1 - g.l / r.restLength) * g.Q);
        }},
-      {"dfdx_uses_kd", "uses kd where it needs ks", "-kd (e eᵀ + (1 - l0/l)(I - e eᵀ))",
+      {"dfdx_uses_kd", "uses kd where it needs ks", "-kd (e eᵀ + (1 - l0/l) (I - e eᵀ))",
        [](const SpringForceRequest& r, const Geometry& g) -> Mat2 {
          return -r.kd * (g.P + (1 - r.restLength / g.l) * g.Q);
        }},

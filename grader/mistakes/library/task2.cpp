@@ -1,5 +1,5 @@
 // Task 2, the forces, named part by part (as parts.cpp names the spring force's terms): gravity
-// m g, buoyancy b (T - T_air)(0, 1), drag -k_d v, repulsion k_r d n while inside, and
+// m g, buoyancy b (T - T_air) (0, 1), drag -k_d v, repulsion k_r d n while inside, and
 // externalForce, their sum with the repulsion of every obstacle. Each part has the physics' form
 // and the wrong forms students write (tests/wrong/t2_*, b2_*, c2_*); every combination of one or
 // two wrong parts is a model, named only when it alone of task 2's fits every answer.
@@ -37,7 +37,7 @@ const std::vector<Form>& formsOf(int part) {
        {"gravity_without_mass", "leaves out the mass", "g"},
        {"gravity_sign", "has the wrong sign", "-m g"}},
       {{"", "", kBuoyancyFormula},
-       {"buoyancy_downwards", "has the wrong sign", "b (T_air - T)(0, 1)"},
+       {"buoyancy_downwards", "has the wrong sign", "b (T_air - T) (0, 1)"},
        {"buoyancy_no_air", "leaves out the air's temperature", "b T (0, 1)"}},
       {{"", "", kDragFormula},
        {"drag_wrong_sign", "has the wrong sign", "+k_d v"},
