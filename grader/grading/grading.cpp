@@ -53,10 +53,7 @@ fs::path enterableScratch() {
   if (ec || !enterableBy(base, kNobody, kSandboxGid)) base = "/tmp";
   std::string name = (base / "a6_grade.XXXXXX").string();
   if (mkdtemp(name.data()) == nullptr) return {};
-  fs::permissions(name,
-                  fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                      fs::perms::others_read | fs::perms::others_exec,
-                  ec);
+  fs::permissions(name, kOpenFolder, ec);
   return name;
 }
 
