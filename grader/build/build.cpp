@@ -50,11 +50,6 @@ std::string replaceAll(std::string s, const std::string& from, const std::string
   return s;
 }
 
-std::string cap(const std::string& s, std::size_t bytes) {
-  if (s.size() <= bytes) return s;
-  return s.substr(0, bytes) + "\n[... " + std::to_string(s.size() - bytes) + " more bytes cut]\n";
-}
-
 std::set<std::string> readSymbols(const fs::path& file) {
   std::set<std::string> symbols;
   std::ifstream in(file);
