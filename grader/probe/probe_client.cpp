@@ -384,8 +384,7 @@ struct ProbeClient::Impl {
     }
     toProbe = request.take(1);
     fromProbe = answer.take(0);
-    fcntl(toProbe, F_SETFL, fcntl(toProbe, F_GETFL) | O_NONBLOCK);
-    fcntl(fromProbe, F_SETFL, fcntl(fromProbe, F_GETFL) | O_NONBLOCK);
+    for (int fd : {toProbe, fromProbe}) fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK);
     return {};
   }
 
