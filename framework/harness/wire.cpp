@@ -49,23 +49,18 @@ Malformed prefixed(const std::string& where, const Malformed& e) {
   return Malformed(where + (e.what()[0] == '[' ? "" : ": ") + e.what());
 }
 
-// Prefixes the message of a Malformed thrown by `body` with `where` ("states[2]: ...").
-template <typename Body>
-auto within(const char* where, Body&& body) -> decltype(body()) {
+// Prefixes the message of a Malformed thrown by `body` with `where`: a member's name
+// ("states: ...") or a list item's index ("[2]...", written only when it is needed).
+template <typename Where, typename Body>
+auto within(Where where, Body&& body) -> decltype(body()) {
   try {
     return body();
   } catch (const Malformed& e) {
-    throw prefixed(where, e);
-  }
-}
-
-// The same for item `k` of a list ("[2]"), whose name is written only when it is needed.
-template <typename Body>
-auto withinItem(std::size_t k, Body&& body) -> decltype(body()) {
-  try {
-    return body();
-  } catch (const Malformed& e) {
-    throw prefixed("[" + std::to_string(k) + "]", e);
+    if constexpr (std::is_integral_v<Where>) {
+      throw prefixed("[" + std::to_string(where) + "]", e);
+    } else {
+      throw prefixed(where, e);
+    }
   }
 }
 
@@ -138,8 +133,8 @@ Vec2 toVec(const json& j) {
     throw Malformed(std::string("expected [x, y], got ") +
                     (j.is_array() ? "an array of " + std::to_string(j.size()) : j.type_name()));
   }
-  const double x = withinItem(0, [&] { return decodeDouble(j[0]); });  // in order: the first
-  const double y = withinItem(1, [&] { return decodeDouble(j[1]); });  // bad item is named
+  const double x = within(0, [&] { return decodeDouble(j[0]); });  // in order: the first
+  const double y = within(1, [&] { return decodeDouble(j[1]); });  // bad item is named
   return Vec2(x, y);
 }
 
@@ -155,8 +150,8 @@ Mat2 toMat(const json& j) {
                     (j.is_array() ? "an array of " + std::to_string(j.size()) : j.type_name()));
   }
   Mat2 m;
-  m.row(0) = withinItem(0, [&] { return toVec(j[0]); }).transpose();
-  m.row(1) = withinItem(1, [&] { return toVec(j[1]); }).transpose();
+  m.row(0) = within(0, [&] { return toVec(j[0]); }).transpose();
+  m.row(1) = within(1, [&] { return toVec(j[1]); }).transpose();
   return m;
 }
 
@@ -176,7 +171,7 @@ auto toList(const json& j, Decode&& decode) -> std::vector<decltype(decode(j))> 
   std::vector<decltype(decode(j))> out;
   out.reserve(j.size());
   for (std::size_t k = 0; k < j.size(); ++k) {
-    out.push_back(withinItem(k, [&] { return decode(j[k]); }));
+    out.push_back(within(k, [&] { return decode(j[k]); }));
   }
   return out;
 }

@@ -60,6 +60,12 @@ struct Inventory {
 /// none is a folder; plain otherwise. `exclude`: as for findSubmissions.
 Layout detectLayout(const std::filesystem::path& input, const std::filesystem::path& exclude = {});
 
+/// The folder of a Gradescope export: `input` itself, or its only sub-folder (hidden ones, links
+/// and `exclude` aside) when it holds submission_metadata.yml (the export zip unzips to
+/// assignment_<id>_export/); else empty.
+std::filesystem::path gradescopeRoot(const std::filesystem::path& input,
+                                     const std::filesystem::path& exclude = {});
+
 /// Every submission in `input`, read as `layout`. `exclude` (the output folder, when it lies
 /// inside the input) is never taken for a submission.
 Inventory findSubmissions(const std::filesystem::path& input, Layout layout,

@@ -230,25 +230,6 @@ bool sameFile(const fs::path& a, const fs::path& b) {
   return !b.empty() && fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec);
 }
 
-// The folder of a Gradescope export: `input` itself, or its only sub-folder holding the
-// metadata (the export zip unzips to assignment_<id>_export/).
-fs::path gradescopeRoot(const fs::path& input, const fs::path& exclude) {
-  std::error_code ec;
-  if (fs::is_regular_file(input / "submission_metadata.yml", ec)) return input;
-  fs::path found;
-  int dirs = 0;
-  for (fs::directory_iterator it(input, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (!it->is_directory(ec) || it->is_symlink(ec) || isSystemName(name) ||
-        sameFile(it->path(), exclude)) {
-      continue;
-    }
-    ++dirs;
-    if (fs::is_regular_file(it->path() / "submission_metadata.yml", ec)) found = it->path();
-  }
-  return dirs == 1 ? found : fs::path();
-}
-
 std::vector<fs::directory_entry> sortedEntries(const fs::path& dir, std::string& error) {
   std::vector<fs::directory_entry> entries;
   std::error_code ec;
@@ -425,6 +406,23 @@ void findCanvas(const fs::path& input, const fs::path& exclude, Inventory& inv) 
 }
 
 }  // namespace
+
+fs::path gradescopeRoot(const fs::path& input, const fs::path& exclude) {
+  std::error_code ec;
+  if (fs::is_regular_file(input / "submission_metadata.yml", ec)) return input;
+  fs::path found;
+  int dirs = 0;
+  for (fs::directory_iterator it(input, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (!it->is_directory(ec) || it->is_symlink(ec) || isSystemName(name) ||
+        sameFile(it->path(), exclude)) {
+      continue;
+    }
+    ++dirs;
+    if (fs::is_regular_file(it->path() / "submission_metadata.yml", ec)) found = it->path();
+  }
+  return dirs == 1 ? found : fs::path();
+}
 
 Layout detectLayout(const fs::path& input, const fs::path& exclude) {
   if (!gradescopeRoot(input, exclude).empty()) return Layout::Gradescope;

@@ -50,11 +50,6 @@ std::string replaceAll(std::string s, const std::string& from, const std::string
   return s;
 }
 
-std::string cap(const std::string& s, std::size_t bytes) {
-  if (s.size() <= bytes) return s;
-  return s.substr(0, bytes) + "\n[... " + std::to_string(s.size() - bytes) + " more bytes cut]\n";
-}
-
 std::set<std::string> readSymbols(const fs::path& file) {
   std::set<std::string> symbols;
   std::ifstream in(file);
@@ -301,13 +296,6 @@ std::string whatShutsOut(const fs::path& path, uid_t uid, gid_t gid) {
   }
   return "";
 }
-
-// What the grader makes for the sandbox's user: folders it reaches, files it reads.
-constexpr fs::perms kOpenFolder = fs::perms::owner_all | fs::perms::group_read |
-                                  fs::perms::group_exec | fs::perms::others_read |
-                                  fs::perms::others_exec;
-constexpr fs::perms kReadableFile =
-    fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read;
 
 // Makes workDir/obj, open to the sandbox's user. Returns an error, or "".
 std::string makeWorkDir(const fs::path& workDir) {

@@ -74,6 +74,13 @@ struct Build {
   bool ok() const { return error.empty(); }
 };
 
+/// `text`, or its first `bytes` bytes and a line saying how many more were cut, then `after`.
+inline std::string cap(const std::string& text, std::size_t bytes, const char* after = "\n") {
+  if (text.size() <= bytes) return text;
+  return text.substr(0, bytes) + "\n[... " + std::to_string(text.size() - bytes) +
+         " more bytes cut]" + after;
+}
+
 /// Limits for one compile or link (common/limits.h: kCompileSeconds, kCompileMemoryBytes), 64 MiB
 /// files, a few processes (the driver runs cc1plus, as, collect2, ld).
 Limits defaultCompileLimits();

@@ -7,14 +7,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "build/build.h"
 #include "build/startup.h"
 #include "common/fnv1a.h"
+#include "common/read_all.h"
 #include "harness/tasks.h"
 #include "intake/intake.h"
 #include "mistakes/mistakes.h"
@@ -53,10 +52,7 @@ fs::path enterableScratch() {
   if (ec || !enterableBy(base, kNobody, kSandboxGid)) base = "/tmp";
   std::string name = (base / "a6_grade.XXXXXX").string();
   if (mkdtemp(name.data()) == nullptr) return {};
-  fs::permissions(name,
-                  fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                      fs::perms::others_read | fs::perms::others_exec,
-                  ec);
+  fs::permissions(name, kOpenFolder, ec);
   return name;
 }
 
@@ -66,10 +62,7 @@ std::uint64_t seedOf(const std::map<std::string, fs::path>& files) {
   Fnv1a h;  // the names and texts run together, without separators
   for (const auto& [name, path] : files) {
     h.addBytes(name.data(), name.size());
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    const std::string bytes = text.str();
+    const std::string bytes = readAll(path);  // a copy the intake wrote, bounded
     h.addBytes(bytes.data(), bytes.size());
   }
   return h.h % 1000000007ull;  // short enough to type in a regrade

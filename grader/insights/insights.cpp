@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <system_error>
 
-#include "batch/batch.h"  // parseGradescopeMetadata
+#include "batch/batch.h"  // parseGradescopeMetadata, gradescopeRoot
+#include "common/read_all.h"
 
 namespace a6::grader::insights {
 namespace {
@@ -19,14 +19,6 @@ using Json = nlohmann::json;
 
 // A results.json is a few hundred kB: anything larger is not read (a problem, not a grade).
 constexpr std::size_t kLargestResults = 16u << 20;
-
-std::string readAll(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string text(kLargestResults + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  return text.size() > kLargestResults ? std::string() : text;
-}
 
 SubmissionResult ungraded(const std::string& key, const std::string& problem) {
   SubmissionResult s;
@@ -128,7 +120,7 @@ void readExtra(const Json& extra, SubmissionResult& s) {
 
 // a6_batch's marker (batch.json) of a submission that has no results: why.
 std::string markerProblem(const fs::path& marker) {
-  const Json m = Json::parse(readAll(marker), nullptr, false);
+  const Json m = Json::parse(readAll(marker, kLargestResults), nullptr, false);
   const std::string status = stringAt(m, "status"), reason = stringAt(m, "reason");
   if (status.empty()) return "no results.json, and its batch.json cannot be read";
   return reason.empty() ? status : status + ": " + reason;
@@ -142,19 +134,6 @@ fs::path findResults(const fs::path& dir) {
   return fs::is_regular_file(fs::symlink_status(file, ec)) ? file : fs::path();
 }
 
-// The folder holding submission_metadata.yml: `folder` or its only sub-folder; else empty.
-fs::path gradescopeRoot(const fs::path& folder) {
-  std::error_code ec;
-  if (fs::is_regular_file(folder / "submission_metadata.yml", ec)) return folder;
-  std::vector<fs::path> dirs;
-  for (const auto& e : fs::directory_iterator(folder, ec)) {
-    if (e.is_directory(ec)) dirs.push_back(e.path());
-  }
-  if (dirs.size() == 1 && fs::is_regular_file(dirs[0] / "submission_metadata.yml", ec))
-    return dirs[0];
-  return {};
-}
-
 std::string peopleOf(const std::vector<batch::Person>& people, const std::string& fallback) {
   std::string names;
   for (const batch::Person& p : people) names += (names.empty() ? "" : ", ") + p.name;
@@ -163,7 +142,8 @@ std::string peopleOf(const std::vector<batch::Person>& people, const std::string
 
 // The export's submission_<id>/ folders, each named by its submitters.
 std::vector<std::pair<std::string, fs::path>> submissionsOf(const fs::path& root) {
-  const auto people = batch::parseGradescopeMetadata(readAll(root / "submission_metadata.yml"));
+  const auto people =
+      batch::parseGradescopeMetadata(readAll(root / "submission_metadata.yml", kLargestResults));
   std::vector<std::pair<std::string, fs::path>> all;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(root, ec)) {
@@ -185,7 +165,7 @@ std::vector<SubmissionResult> readGradescope(const fs::path& root,
     const fs::path results = findResults(folder);
     missing += results.empty();
     all.push_back(results.empty() ? ungraded(key, "no results.json in the export")
-                                  : readResults(key, readAll(results)));
+                                  : readResults(key, readAll(results, kLargestResults)));
   }
   if (missing > 0) {
     notes.push_back(std::to_string(missing) + " of " + std::to_string(all.size()) +
@@ -203,7 +183,7 @@ std::vector<SubmissionResult> readBatch(const fs::path& folder, std::vector<std:
     if (!e.is_directory(ec) || key.empty() || key[0] == '.') continue;  // .similarity: work
     const fs::path results = e.path() / "results.json", marker = e.path() / "batch.json";
     if (fs::is_regular_file(results, ec)) {
-      all.push_back(readResults(key, readAll(results)));
+      all.push_back(readResults(key, readAll(results, kLargestResults)));
       if (fs::is_regular_file(e.path() / "report.html", ec))
         all.back().report = key + "/report.html";
     } else if (fs::is_regular_file(marker, ec)) {
@@ -256,12 +236,12 @@ SubmissionResult readResults(const std::string& key, const std::string& resultsJ
 }
 
 std::vector<std::pair<std::string, fs::path>> exportedSubmissions(const fs::path& folder) {
-  const fs::path root = gradescopeRoot(folder);
+  const fs::path root = batch::gradescopeRoot(folder);
   return root.empty() ? std::vector<std::pair<std::string, fs::path>>{} : submissionsOf(root);
 }
 
 std::vector<SubmissionResult> readFolder(const fs::path& folder, std::vector<std::string>& notes) {
-  const fs::path gradescope = gradescopeRoot(folder);
+  const fs::path gradescope = batch::gradescopeRoot(folder);
   std::vector<SubmissionResult> all =
       gradescope.empty() ? readBatch(folder, notes) : readGradescope(gradescope, notes);
   std::sort(all.begin(), all.end(),

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "harness/tasks.h"
+#include "sandbox/sandbox.h"  // kOpenFolder, kReadableFile
 
 namespace a6::grader::entries {
 
@@ -164,10 +165,7 @@ bool makeDest(const fs::path& dest, Intake& out) {
     out.graderFault = true;
     return false;
   }
-  fs::permissions(dest,
-                  fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                      fs::perms::others_read | fs::perms::others_exec,
-                  ec);
+  fs::permissions(dest, kOpenFolder, ec);
   return true;
 }
 }  // namespace
@@ -262,10 +260,7 @@ bool Collector::write(const fs::path& target, const Copy& copy, Intake& out) {
     }
   }
   std::error_code ec;
-  fs::permissions(target,
-                  fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
-                      fs::perms::others_read,
-                  ec);
+  fs::permissions(target, kReadableFile, ec);
   if (!validUtf8(copy.data)) {
     note(shownPath(copy.path) +
          ": not valid UTF-8 text (taken anyway; if the compiler "

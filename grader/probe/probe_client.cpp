@@ -150,13 +150,12 @@ struct Deadline {
   Clock::time_point hardEnd = Clock::time_point::max();
 
   Clock::time_point at() const {
-    if (answers == nullptr) return std::min(base, hardEnd);
     return std::min(secondsAfter(base, forceWaitAllowance(*answers - answersAtStart, limit)),
                     hardEnd);
   }
 };
 
-enum class Io { Ok, Closed, TimedOut, Garbage };
+enum class Io { Ok, Closed, TimedOut };
 
 // Writes all of `bytes` to a non-blocking pipe before `deadline`. SIGPIPE is blocked in this
 // thread meanwhile (a probe that died must not kill the grader) and a pending one is consumed.
@@ -384,8 +383,7 @@ struct ProbeClient::Impl {
     }
     toProbe = request.take(1);
     fromProbe = answer.take(0);
-    fcntl(toProbe, F_SETFL, fcntl(toProbe, F_GETFL) | O_NONBLOCK);
-    fcntl(fromProbe, F_SETFL, fcntl(fromProbe, F_GETFL) | O_NONBLOCK);
+    for (int fd : {toProbe, fromProbe}) fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK);
     return {};
   }
 

@@ -34,12 +34,6 @@ constexpr std::size_t kMessageCap = 8u << 10;      // per test message
 constexpr std::size_t kCompilerCap = 8u << 10;     // compiler messages per task
 constexpr std::uintmax_t kImageCap = 16u << 20;    // an image larger than this is not embedded
 
-std::string cap(const std::string& text, std::size_t limit) {
-  if (text.size() <= limit) return text;
-  return text.substr(0, limit) + "\n[... " + std::to_string(text.size() - limit) +
-         " more bytes cut]";
-}
-
 std::string fmt(double x) { return formatPoints(x); }
 
 // The task of a task file's name, 0 otherwise.
@@ -129,7 +123,8 @@ std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
   }
   if (const TaskBuild* t = buildOf(report, s.item.task); t != nullptr && t->usesStarter()) {
     out += t->file + " " + buildWords(*t).sentence + ".\n";
-    if (!t->messages.empty()) out += "Compiler messages:\n" + cap(t->messages, kCompilerCap) + "\n";
+    if (!t->messages.empty())
+      out += "Compiler messages:\n" + cap(t->messages, kCompilerCap, "") + "\n";
     out += "\n";
   }
   if (s.tests.empty()) {
@@ -143,11 +138,11 @@ std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
            (s.item.allOrNothing ? " (all-or-nothing: no points)" : "") + ":\n";
     for (const TestOutcome* t : s.tests) {
       if (t->passed) continue;
-      out += "\nFAILED " + t->name + "\n" + cap(t->message, kMessageCap) + "\n";
+      out += "\nFAILED " + t->name + "\n" + cap(t->message, kMessageCap, "") + "\n";
     }
   }
   out += precisionNote(s);
-  return cap(out, kItemOutputCap);
+  return cap(out, kItemOutputCap, "");
 }
 
 // The score line a student may see now: only the visible items count, and it says so when
@@ -458,7 +453,7 @@ void htmlSubmission(std::ostringstream& out, const GradeReport& report) {
     if (t.messages.empty()) continue;
     out << "<details" << (t.usesStarter() ? " open" : "")
         << "><summary>Compiler messages for <code>" << htmlEscape(t.file)
-        << "</code></summary><pre>" << htmlEscape(cap(t.messages, 64u << 10))
+        << "</code></summary><pre>" << htmlEscape(cap(t.messages, 64u << 10, ""))
         << "</pre></details>\n";
   }
 }
@@ -479,7 +474,7 @@ void htmlItem(std::ostringstream& out, const GradeReport& report, const ScoredIt
   for (const TestOutcome* t : s.tests) {
     out << "<tr><td><code>" << htmlEscape(t->name) << "</code>";
     if (!t->passed && !t->message.empty()) {
-      out << "<pre>" << htmlEscape(cap(t->message, 32u << 10)) << "</pre>";
+      out << "<pre>" << htmlEscape(cap(t->message, 32u << 10, "")) << "</pre>";
     }
     htmlImages(out, *t);
     out << "</td><td class=\"" << (t->passed ? "pass\">passed" : "fail\">failed")

@@ -175,12 +175,10 @@ Started start(const SandboxSpec& spec) {
   }
   if (!awaitExec(status[0], plan, spec, s)) {
     killAndReap(pid);
-    ::close(out[0]);
-    ::close(end[0]);
+    for (int fd : {out[0], end[0]}) ::close(fd);
     return s;
   }
-  fcntl(out[0], F_SETFL, fcntl(out[0], F_GETFL) | O_NONBLOCK);
-  fcntl(end[0], F_SETFL, fcntl(end[0], F_GETFL) | O_NONBLOCK);
+  for (int fd : {out[0], end[0]}) fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK);
   s.pid = pid;
   s.outFd = out[0];
   s.endFd = plan.pidNamespace ? end[0] : -1;

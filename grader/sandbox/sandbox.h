@@ -35,6 +35,11 @@
 
 namespace a6::grader {
 
+/// The modes of what the grader makes for the sandbox's user: a folder it reaches (rwxr-xr-x),
+/// a file it reads (rw-r--r--).
+constexpr std::filesystem::perms kOpenFolder = std::filesystem::perms(0755);
+constexpr std::filesystem::perms kReadableFile = std::filesystem::perms(0644);
+
 struct Limits {
   double wallSeconds = kDefaultTimeLimit;       ///< per request (probe) or command (compiler), s
   double cpuSeconds = kProbeCpuSeconds;         ///< RLIMIT_CPU for the whole process, s
