@@ -435,7 +435,7 @@ check_handout_images() {
     if ! grep -qF -- "\`$name\`" docs/handout.md; then
       fail "docs/handout.md: no row for the reference image $name"
       bad=1
-    elif ! grep -F -- "\`$name\`" docs/handout.md | grep -qF -- "$shows"; then
+    elif ! grep -qF -- "$shows" < <(grep -F -- "\`$name\`" docs/handout.md); then
       fail "docs/handout.md: the row of $name does not say what tests/golden/manifest.json says: \"$shows\""
       bad=1
     fi

@@ -26,9 +26,18 @@ rank_of() {
   echo -1
 }
 
+# Whether WORD is one of the rest of the arguments (no pipe: under pipefail, grep -q ending
+# first would kill printf and turn a match into a failure, by chance, on a loaded machine).
+among() {
+  local word="$1" item
+  shift
+  for item in "$@"; do [ "$item" = "$word" ] && return 0; done
+  return 1
+}
+
 # FILE -> its folder's rank; a program's main ranks above every stage.
 file_rank() {
-  if printf '%s\n' "${MAINS[@]}" | grep -qxF -- "$1"; then
+  if among "$1" "${MAINS[@]}"; then
     echo 99
   else
     rank_of "$(cut -d/ -f2 <<<"$1")"
@@ -75,7 +84,7 @@ problem_of() {
       ;;
     outside)
       [[ "$file" == grader/checks/* ]] && return
-      printf '%s\n' "${KNOWN_OUTSIDE[@]}" | grep -qxF -- "$file $include" ||
+      among "$file $include" "${KNOWN_OUTSIDE[@]}" ||
         echo "$file includes $include, from outside grader/ and framework/"
       ;;
   esac

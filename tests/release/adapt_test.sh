@@ -89,7 +89,7 @@ job() {
 says() { grep -qF -- "$2" "$work/$1.log" || fail "$1: the job did not say \"$2\" (log: $work/$1.log)"; }
 # lists LOG FILE: the job's list of the files it changed names FILE.
 lists() {
-  sed -n '/^files this job changed/,/^[^ ]/p' "$work/$1.log" | grep -qx -- "  $2" ||
+  grep -qx -- "  $2" < <(sed -n '/^files this job changed/,/^[^ ]/p' "$work/$1.log") ||
     fail "$1: the job's list of changed files lacks $2 (log: $work/$1.log)"
 }
 # step_passed BEFORE TEXT: "ok" TEXT when no check failed since the failure count BEFORE.
