@@ -88,12 +88,15 @@ ParticleDraw drawParticle(Draw& d) {
 using Pair = std::pair<Bindings, Value>;
 
 std::vector<Law> springLaws() {
+  // The public checks' hints are read by students too.
   const std::vector<const char*> jacobianReaders = {"docs/handout.md", "starter/implicit.cpp",
-                                                    "framework/include/a6/implicit.h"};
+                                                    "framework/include/a6/implicit.h",
+                                                    "tests/task7_implicit_test.cpp"};
   return {
       {"the spring force",
        kSpringForceFormula,
-       {"docs/handout.md", "starter/spring.cpp", "framework/include/a6/spring.h"},
+       {"docs/handout.md", "starter/spring.cpp", "framework/include/a6/spring.h",
+        "tests/task1_spring_test.cpp"},
        [](Draw& d) {
          const SpringDraw s = drawSpring(d);
          return Pair{s.symbols, s.force};
@@ -111,31 +114,47 @@ std::vector<Law> springLaws() {
   };
 }
 
+// The texts students read the particle's laws in (the public checks' hints among them).
+struct ParticleReaders {
+  std::vector<const char*> forces, steps, viewer, drag;
+};
+
+ParticleReaders particleReaders() {
+  ParticleReaders r;
+  r.forces = {"docs/handout.md", "starter/forces.cpp", "framework/include/a6/forces.h",
+              "tests/task2_forces_test.cpp"};
+  r.steps = {"docs/handout.md",
+             "starter/time_stepping.cpp",
+             "starter/particle_system.cpp",
+             "framework/include/a6/mass_spring_system.h",
+             "framework/include/a6/particle_system.h",
+             "tests/task3_time_stepping_test.cpp"};
+  r.viewer = r.forces;
+  r.viewer.insert(r.viewer.end(), {"framework/viewer/viewer.cpp", "docs/viewer.md"});
+  r.drag = r.viewer;  // and the hints of the stepping checks and the scenes
+  r.drag.insert(r.drag.end(), {"tests/task3_time_stepping_test.cpp", "tests/golden/manifest.json"});
+  return r;
+}
+
 std::vector<Law> particleLaws() {
-  const std::vector<const char*> forcesReaders = {"docs/handout.md", "starter/forces.cpp",
-                                                  "framework/include/a6/forces.h"};
-  const std::vector<const char*> stepReaders = {
-      "docs/handout.md", "starter/time_stepping.cpp", "starter/particle_system.cpp",
-      "framework/include/a6/mass_spring_system.h", "framework/include/a6/particle_system.h"};
-  std::vector<const char*> viewerReaders = forcesReaders;
-  viewerReaders.insert(viewerReaders.end(), {"framework/viewer/viewer.cpp", "docs/viewer.md"});
+  const ParticleReaders readers = particleReaders();
   return {
-      {"gravity", kGravityFormula, forcesReaders,
+      {"gravity", kGravityFormula, readers.forces,
        [](Draw& d) {
          const ParticleDraw x = drawParticle(d);
          return Pair{x.symbols, referenceGravity(x.p, x.env)};
        }},
-      {"buoyancy", kBuoyancyFormula, viewerReaders,
+      {"buoyancy", kBuoyancyFormula, readers.viewer,
        [](Draw& d) {
          const ParticleDraw x = drawParticle(d);
          return Pair{x.symbols, referenceBuoyancy(x.p, x.env)};
        }},
-      {"drag", kDragFormula, viewerReaders,
+      {"drag", kDragFormula, readers.drag,
        [](Draw& d) {
          const ParticleDraw x = drawParticle(d);
          return Pair{x.symbols, referenceDrag(x.p, x.env)};
        }},
-      {"repulsion", kRepulsionFormula, forcesReaders,
+      {"repulsion", kRepulsionFormula, readers.forces,
        [](Draw& d) {
          ParticleDraw x = drawParticle(d);
          Contact c;
@@ -144,7 +163,7 @@ std::vector<Law> particleLaws() {
          x.symbols["d"] = scalar(c.depth), x.symbols["n"] = c.normal;
          return Pair{x.symbols, referenceRepulsion(x.env, c)};
        }},
-      {"the velocity step", kVelocityStepFormula, stepReaders,
+      {"the velocity step", kVelocityStepFormula, readers.steps,
        [](Draw& d) {
          ParticleDraw x = drawParticle(d);
          x.p.f = d.vec(50);
@@ -152,7 +171,7 @@ std::vector<Law> particleLaws() {
          x.symbols["f"] = x.p.f, x.symbols["dt"] = scalar(dt);
          return Pair{x.symbols, x.p.v + referenceVelocityChange(x.p, dt)};
        }},
-      {"the position step", kPositionStepFormula, stepReaders,
+      {"the position step", kPositionStepFormula, readers.steps,
        [](Draw& d) {
          ParticleDraw x = drawParticle(d);
          const double dt = d.uniform(1e-3, 0.1);
