@@ -42,15 +42,16 @@ struct System {
   Environment env;
 };
 
-// 1. each particle's external force, 2. every spring's force on both ends.
-void accumulateForces(System& s, const StepForm& form) {
-  for (Particle& p : s.particles) {
-    const Vec2 f = referenceExternalForce(p, s.env);
+// 1. each particle's external force, 2. every spring's force on both ends (tasks 3 and 7).
+void accumulateForces(std::vector<Particle>& ps, const std::vector<SpringData>& springs,
+                      const Environment& env, const StepForm& form) {
+  for (Particle& p : ps) {
+    const Vec2 f = referenceExternalForce(p, env);
     p.f = form.forcesKept ? Vec2(p.f + f) : f;
   }
-  for (const SpringData& d : s.springs) {
-    Particle& p1 = s.particles[static_cast<std::size_t>(d.i)];
-    Particle& p2 = s.particles[static_cast<std::size_t>(d.j)];
+  for (const SpringData& d : springs) {
+    Particle& p1 = ps[static_cast<std::size_t>(d.i)];
+    Particle& p2 = ps[static_cast<std::size_t>(d.j)];
     const Spring spring{&p1, &p2, d.restLength, d.ks, d.kd, d.type};
     const Vec2 f = referenceSpringForce(spring);
     p2.f += form.springEnds == 2 ? Vec2(-f) : f;
@@ -60,7 +61,7 @@ void accumulateForces(System& s, const StepForm& form) {
 
 // 3. velocity, then position with the new velocity (or the form's order, division and pins).
 void step(System& s, double dt, const StepForm& form) {
-  accumulateForces(s, form);
+  accumulateForces(s.particles, s.springs, s.env, form);
   for (Particle& p : s.particles) {
     if (p.pinned && form.pins == 0) continue;
     const bool moveV = !p.pinned || form.pins != 3, moveX = !p.pinned || form.pins != 2;
@@ -153,13 +154,7 @@ void assemble(const std::vector<Particle>& ps, const std::vector<SpringData>& sp
 
 void step(std::vector<Particle>& ps, const std::vector<SpringData>& springs, const Environment& env,
           double h, const ImplicitForm& form) {
-  for (Particle& p : ps) p.f = referenceExternalForce(p, env);
-  for (const SpringData& d : springs) {
-    const Spring s{&ps[d.i], &ps[d.j], d.restLength, d.ks, d.kd, d.type};
-    const Vec2 f = referenceSpringForce(s);
-    ps[d.j].f += f;
-    ps[d.i].f -= f;
-  }
+  accumulateForces(ps, springs, env, StepForm{});
   Eigen::MatrixXd A;
   Eigen::VectorXd b;
   assemble(ps, springs, h, form, A, b);

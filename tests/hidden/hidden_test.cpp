@@ -154,7 +154,7 @@ TEST(Task2Hidden, RandomParticlesAndEnvironmentsMatchTheSlideFormulas) {
         << in << hint("buoyancy" + is + kBuoyancyFormula);
     ASSERT_VEC_NEAR(result.drag, referenceDrag(p, env), tol)
         << in << hint("drag" + is + kDragFormula);
-    ASSERT_VEC_NEAR(result.repulsion, referenceRepulsion(env, r.contact), tol)
+    ASSERT_VEC_NEAR(result.repulsion, referenceRepulsion(env.repulsion, r.contact), tol)
         << in << ", contact depth " << num(r.contact.depth) << ", normal " << str(r.contact.normal)
         << hint("repulsion" + is + kRepulsionFormula + " while d > 0, and zero otherwise");
     const Vec2 total = referenceExternalForce(p, env);

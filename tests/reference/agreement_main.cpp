@@ -83,12 +83,13 @@ void compare(const ForcesRequest& r, const ForcesResult& got) {
   const Vec2 total = referenceExternalForce(p, r.env);
   const double scale = total.norm() + referenceGravity(p, r.env).norm() +
                        referenceDrag(p, r.env).norm() + referenceBuoyancy(p, r.env).norm() +
-                       referenceRepulsion(r.env, r.contact).norm();
-  const bool same = near(got.gravity, referenceGravity(p, r.env), scale, kForces) &&
-                    near(got.buoyancy, referenceBuoyancy(p, r.env), scale, kForces) &&
-                    near(got.drag, referenceDrag(p, r.env), scale, kForces) &&
-                    near(got.repulsion, referenceRepulsion(r.env, r.contact), scale, kForces) &&
-                    near(got.total, total, scale, kForces);
+                       referenceRepulsion(r.env.repulsion, r.contact).norm();
+  const bool same =
+      near(got.gravity, referenceGravity(p, r.env), scale, kForces) &&
+      near(got.buoyancy, referenceBuoyancy(p, r.env), scale, kForces) &&
+      near(got.drag, referenceDrag(p, r.env), scale, kForces) &&
+      near(got.repulsion, referenceRepulsion(r.env.repulsion, r.contact), scale, kForces) &&
+      near(got.total, total, scale, kForces);
   gTallies["forces"].add(same, where());
 }
 

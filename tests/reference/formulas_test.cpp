@@ -161,7 +161,7 @@ std::vector<Law> particleLaws() {
          c.depth = d.uniform(1e-3, 0.2);  // inside: outside, the force is zero by the text's words
          c.normal = d.vec(1).normalized();
          x.symbols["d"] = scalar(c.depth), x.symbols["n"] = c.normal;
-         return Pair{x.symbols, referenceRepulsion(x.env, c)};
+         return Pair{x.symbols, referenceRepulsion(x.env.repulsion, c)};
        }},
       {"the velocity step", kVelocityStepFormula, readers.steps,
        [](Draw& d) {

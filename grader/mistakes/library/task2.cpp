@@ -68,9 +68,9 @@ enum Sum : std::size_t { kEveryObstacle, kSumNoCircles, kSumFirstObstacle, kSumW
 using Choice = std::array<std::size_t, kParts>;
 
 // A part's value in its form: the physics' (the reference's) or a wrong one.
-Vec2 repulsion(const Contact& c, const Environment& env, std::size_t form) {
-  if (form == kRepulsionAlwaysOn) return env.repulsion * c.depth * c.normal;
-  const Vec2 f = referenceRepulsion(env, c);
+Vec2 repulsion(const Contact& c, double kr, std::size_t form) {
+  if (form == kRepulsionAlwaysOn) return kr * c.depth * c.normal;
+  const Vec2 f = referenceRepulsion(kr, c);
   return form == kRepulsionSign ? Vec2(-f) : f;
 }
 
@@ -96,17 +96,16 @@ Vec2 drag(const Particle& p, const Environment& env, std::size_t form) {
 // externalForce's sum in its form: the three forces, then each obstacle's repulsion (the
 // half-planes first, as the handout's loop takes them).
 Vec2 sum(const ForcesRequest& r, const ForcesResult& parts, const Choice& c) {
-  Environment env = r.env;
-  if (c[kSum] == kSumWithDrag) env.repulsion = env.drag;
+  const double kr = c[kSum] == kSumWithDrag ? r.env.drag : r.env.repulsion;
   Vec2 f = parts.gravity + parts.buoyancy + parts.drag;
   std::vector<Contact> contacts;
-  for (const HalfPlane& plane : env.planes) contacts.push_back(contactWith(plane, r.particle.x));
+  for (const HalfPlane& plane : r.env.planes) contacts.push_back(contactWith(plane, r.particle.x));
   if (c[kSum] != kSumNoCircles) {
-    for (const CircleObstacle& circle : env.circles)
+    for (const CircleObstacle& circle : r.env.circles)
       contacts.push_back(contactWith(circle, r.particle.x));
   }
   for (const Contact& contact : contacts) {
-    const Vec2 push = repulsion(contact, env, c[kRepulsion]);
+    const Vec2 push = repulsion(contact, kr, c[kRepulsion]);
     f += push;
     if (c[kSum] == kSumFirstObstacle && push != Vec2::Zero()) break;
   }
@@ -118,7 +117,7 @@ ForcesResult forces(const ForcesRequest& r, const Choice& c) {
   out.gravity = gravity(r.particle, r.env, c[kGravity]);
   out.buoyancy = buoyancy(r.particle, r.env, c[kBuoyancy]);
   out.drag = drag(r.particle, r.env, c[kDrag]);
-  out.repulsion = repulsion(r.contact, r.env, c[kRepulsion]);
+  out.repulsion = repulsion(r.contact, r.env.repulsion, c[kRepulsion]);
   out.total = sum(r, out, c);
   return out;
 }
