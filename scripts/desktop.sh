@@ -20,14 +20,24 @@ say() { printf 'desktop: %s\n' "$*"; }
 
 running() { [ -f "$state/$1.pid" ] && kill -0 "$(cat "$state/$1.pid")" 2>/dev/null; }
 
+# Ends each server: SIGTERM, then SIGKILL after 3 s (an x11vnc whose display went first can
+# ignore SIGTERM, and would hold its port for the next desktop).
 stop() {
-  local p
+  local p pid i
   for p in websockify x11vnc xvfb; do
-    if running "$p"; then kill "$(cat "$state/$p.pid")" 2>/dev/null; fi
+    if running "$p"; then
+      pid="$(cat "$state/$p.pid")"
+      kill "$pid" 2>/dev/null
+      for i in $(seq 30); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+      kill -9 "$pid" 2>/dev/null
+    fi
     rm -f "$state/$p.pid"
   done
   say "stopped"
 }
+
+# Whether something already listens on a TCP port on localhost.
+listening() { (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null; }
 
 status() {
   local p all=0
@@ -41,7 +51,7 @@ status() {
 wait_port() {
   local i
   for i in $(seq 100); do
-    (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null && return 0
+    listening "$1" && return 0
     sleep 0.1
   done
   return 1
@@ -61,9 +71,16 @@ start() {
     return 0
   fi
   stop >/dev/null
+  local i
+  # Another program on a port would answer for ours, and the browser would show its screen.
+  for i in "$vnc_port" "$port"; do
+    if listening "$i"; then
+      say "port $i is taken by another program: choose another display or port"
+      return 1
+    fi
+  done
   Xvfb "$display" -screen 0 "${size}x24" -nolisten tcp >"$state/xvfb.log" 2>&1 &
   echo $! >"$state/xvfb.pid"
-  local i
   for i in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1; done
   x11vnc -display "$display" -forever -shared -nopw -localhost -rfbport "$vnc_port" -quiet \
     >"$state/x11vnc.log" 2>&1 &

@@ -14,10 +14,13 @@ done
 [ -d /usr/share/novnc ] || { echo "SKIP: noVNC is not installed (scripts/install-deps.sh)"; exit 77; }
 rm -rf "$out" && mkdir -p "$out"
 
-# A display and a port nobody uses.
+# A display, and its VNC and web ports, that nobody uses (a server left by another run may still
+# hold a port after its display is gone).
+taken() { (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null; }
 display=""
 for n in $(seq 70 99); do
-  [ -e "/tmp/.X11-unix/X$n" ] || [ -e "/tmp/.X$n-lock" ] || { display=":$n"; break; }
+  [ -e "/tmp/.X11-unix/X$n" ] || [ -e "/tmp/.X$n-lock" ] || taken $((5900 + n)) ||
+    taken $((16000 + n)) || { display=":$n"; break; }
 done
 [ -n "$display" ] || { echo "FAIL: no free X display in :70..:99"; exit 1; }
 port=$((16000 + ${display#:}))
