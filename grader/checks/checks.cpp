@@ -342,6 +342,8 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
             runParticleTrajectories(student, recorded.transcript(), failedChecks(run.tests));
       }
     });
+    noting("asking the diagnosis's inputs", run.notes,
+           [&] { run.measured = askDesigned(student, in.designed); });
   }
   gStudent = nullptr;
   run.transcript = recorded.takeTranscript();

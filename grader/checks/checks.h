@@ -70,6 +70,8 @@ struct ChecksInput {
   /// The student's code linked into this program (tests only, GradeOptions::linked), asked in
   /// place of the probes; null: the probes.
   harness::StudentCode* linked = nullptr;
+  /// Asked after every check has been collected (so they change no score), for the diagnosis.
+  std::vector<Designed> designed;
 };
 
 struct ChecksRun {
@@ -79,6 +81,7 @@ struct ChecksRun {
   std::string probeOutput;          ///< what the probes printed, capped
   Incidents incidents;
   Transcript transcript;          ///< what the public checks asked and the student's code answered
+  Transcript measured;            ///< the designed inputs' answers (labels as `check`)
   std::vector<SceneRun> replays;  ///< the imaged scenes run again at replay frames, for the report
   std::filesystem::path replayFolder;  ///< the reference replays (render/replay.h) beside them
   /// Failed particle checks' runs asked again at many step counts, for the report.

@@ -89,6 +89,22 @@ std::vector<ParticleTrajectory> runParticleTrajectories(BudgetedStudent& student
   return out;
 }
 
+Transcript askDesigned(BudgetedStudent& student, const std::vector<Designed>& designed) {
+  Transcript measured;
+  if (designed.empty()) return measured;
+  student.startTest(kMeasureSeconds);
+  int failures = 0;
+  for (const Designed& d : designed) {
+    harness::Answer answer = student.ask(d.request);
+    if (!harness::outcomeOf(answer).ok()) {
+      if (++failures >= 2) break;  // each may have cost a probe start and its time
+      continue;
+    }
+    measured.exchanges.push_back({d.label, d.request, std::move(answer)});
+  }
+  return measured;
+}
+
 std::vector<SceneRun> runReplays(BudgetedStudent& student,
                                  const std::vector<a6::test::ImagedScene>& scenes) {
   std::vector<SceneRun> runs;

@@ -17,6 +17,10 @@
 
 namespace a6::grader {
 
+/// The designed inputs asked of the student's code within kMeasureSeconds together, in order;
+/// those answered to the end are kept, their label as the exchange's check.
+Transcript askDesigned(BudgetedStudent& student, const std::vector<Designed>& designed);
+
 std::vector<SceneRun> runReplays(BudgetedStudent& student,
                                  const std::vector<a6::test::ImagedScene>& scenes);
 

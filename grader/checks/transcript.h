@@ -21,6 +21,13 @@ struct Exchange {
   harness::Answer answer;  ///< at the request's index
 };
 
+/// A request the diagnosis designed (grader/mistakes/measure.h), asked after every check has been
+/// collected; `label` says what it measures ("t1.elastic").
+struct Designed {
+  std::string label;
+  harness::Request request;
+};
+
 /// One exchange of request kind R, typed (a view into the transcript).
 template <class R>
 struct ExchangeOf {

@@ -42,6 +42,9 @@ constexpr std::size_t kProbeMemoryBytes = std::size_t{512} << 20;
 constexpr double kReplaySeconds = 10;
 /// The time all replays together may take, s: the scenes after it get none.
 constexpr double kReplaysSeconds = 40;
+/// The time the diagnosis's designed inputs may take together, s (the probe's; beyond it the
+/// rest are not asked, and the diagnosis measures what was answered).
+constexpr double kMeasureSeconds = 10;
 
 // --- The grading as a whole ----------------------------------------------------------------------
 
@@ -102,6 +105,7 @@ inline constexpr ListedLimit kLimits[] = {
     {"probe_memory", kProbeMemoryBytes / kMiB, "MiB", "the probe's address space"},
     {"replay_time", kReplaySeconds, "s", "one scene's replay"},
     {"replays_time", kReplaysSeconds, "s", "all replays together"},
+    {"measure_time", kMeasureSeconds, "s", "the diagnosis's designed inputs together"},
     {"own_work", kOwnWorkSeconds, "s", "the grader's own work in one grading, loaded"},
     {"max_grading", maxGradingSeconds(kDefaultTimeBudget), "s",
      "one grading's wall time at the default time budget"},

@@ -16,6 +16,7 @@
 #include "common/read_all.h"
 #include "harness/tasks.h"
 #include "intake/intake.h"
+#include "mistakes/measure.h"
 #include "mistakes/mistakes.h"
 #include "replay/replays.h"
 #include "report/report.h"
@@ -148,6 +149,7 @@ class Grading {
   std::vector<fs::path> secrets_;    // what the probe must not see either
   std::string unavailable_;          // why there is no probe to run the checks against, or ""
   Transcript transcript_;            // the public checks' requests and the student's answers
+  Transcript measured_;              // the designed inputs' answers (mistakes/measure.h)
   std::vector<SceneRun> sceneRuns_;  // the imaged scenes run again, for the replays
   std::vector<ParticleTrajectory> particleTrajectories_;  // failed particle checks run again
   fs::path replayFolder_;                                 // the reference replays
@@ -330,6 +332,7 @@ void Grading::check() {
   in.filter = options_.filter;
   in.progress = !options_.quiet;
   in.replays = options_.filter.empty();
+  if (options_.filter.empty()) in.designed = designedInputs();
   if (!options_.quiet)
     std::fprintf(stderr, "a6_grade: running the checks (seed %llu)\n",
                  static_cast<unsigned long long>(report_.seed));
@@ -346,6 +349,7 @@ void Grading::check() {
   report_.incidents.timeouts = run.incidents.timeouts;
   report_.incidents.startFailures += run.incidents.startFailures;
   transcript_ = std::move(run.transcript);
+  measured_ = std::move(run.measured);
   sceneRuns_ = std::move(run.replays);
   particleTrajectories_ = std::move(run.particleTrajectories);
   replayFolder_ = run.replayFolder;
@@ -360,7 +364,8 @@ void Grading::endWhatWasLeftRunning() {
   }
 }
 
-// 4. The known mistakes that the answers of the tasks whose physics checks failed match.
+// 4. The mistakes of the tasks whose physics checks failed: the known ones their answers match,
+// else what the designed inputs measured.
 void Grading::nameMistakes() {
   std::set<int> failing;
   for (const TestOutcome& t : report_.tests) {
@@ -368,7 +373,9 @@ void Grading::nameMistakes() {
     if (!t.passed && owner.task > 0 && isPhysics(owner.kind)) failing.insert(owner.task);
   }
   try {
-    report_.mistakes = grader::nameMistakes(transcript_, mistakeLibrary(), failing);
+    report_.diagnoses = diagnose(measured_, failing);
+    report_.mistakes =
+        combine(grader::nameMistakes(transcript_, mistakeLibrary(), failing), report_.diagnoses);
   } catch (const std::exception& e) {
     report_.notes.push_back(std::string("naming the mistakes failed: ") + e.what());
   }

@@ -5,7 +5,9 @@
 set(a6_mistakes_dir ${CMAKE_CURRENT_SOURCE_DIR}/mistakes)
 if(EXISTS ${a6_mistakes_dir}/library/library.cpp)
   set(a6_mistake_models)
-  foreach(part library task1 task2 task3 task4 task5 task6 task7 parts)
+  foreach(part library task1 task2 task3 task4 task5 task6 task7 parts measured/fit
+               measured/spring measured/forces measured/stepping measured/cloth
+               measured/particles measured/diagnose)
     list(APPEND a6_mistake_models ${a6_mistakes_dir}/library/${part}.cpp)
   endforeach()
 else()

@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "mistakes/measure.h"
+
 namespace a6::grader {
 namespace {
 
@@ -48,6 +50,16 @@ std::vector<NamedMistake> nameMistakes(const Transcript& transcript,
   std::vector<NamedMistake> named;
   for (auto& [task, mistake] : best) named.push_back(std::move(mistake));
   return named;
+}
+
+std::vector<NamedMistake> combine(const std::vector<NamedMistake>& catalogue,
+                                  const std::vector<NamedMistake>& diagnosed) {
+  std::map<int, NamedMistake> byTask;
+  for (const NamedMistake& m : diagnosed) byTask[m.task] = m;
+  for (const NamedMistake& m : catalogue) byTask[m.task] = m;
+  std::vector<NamedMistake> out;
+  for (auto& [task, m] : byTask) out.push_back(std::move(m));
+  return out;
 }
 
 }  // namespace a6::grader

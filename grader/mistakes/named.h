@@ -1,4 +1,5 @@
-// A known mistake that a student's answers matched: what the report and results.json say.
+// A mistake named for a task: a known one its answers matched (mistakes.h), or what the diagnosis
+// measured (measure.h). What the report and results.json say.
 #pragma once
 
 #include <string>
@@ -10,6 +11,8 @@ struct NamedMistake {
   int task = 0;      ///< its task (harness/tasks.h)
   std::string text;  ///< one sentence for the student: what the code does, and the fix
   int evidence = 0;  ///< how many of the public checks' requests it matched where it differs
+  /// No part was singled out: `text` says what the diagnosis measured (mistakes/measure.h).
+  bool measuredOnly = false;
 };
 
 }  // namespace a6::grader

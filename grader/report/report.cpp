@@ -273,9 +273,20 @@ Json extraData(const GradeReport& report) {
   extra["build"] = std::move(build);
   Json mistakes = Json::array();
   for (const NamedMistake& m : report.mistakes) {
-    mistakes.push_back({{"task", m.task}, {"mistake", m.id}, {"evidence", m.evidence}});
+    mistakes.push_back({{"task", m.task},
+                        {"mistake", m.id},
+                        {"evidence", m.evidence},
+                        {"measured_only", m.measuredOnly}});
   }
   extra["mistakes"] = std::move(mistakes);
+  Json diagnoses = Json::array();
+  for (const NamedMistake& m : report.diagnoses) {
+    diagnoses.push_back({{"task", m.task},
+                         {"diagnosis", m.id},
+                         {"text", m.text},
+                         {"measured_only", m.measuredOnly}});
+  }
+  extra["diagnoses"] = std::move(diagnoses);
   extra["warnings"] = report.warnings;
   extra["notes"] = report.notes;
   extra["errors"] = report.errors;
@@ -463,8 +474,9 @@ void htmlItem(std::ostringstream& out, const GradeReport& report, const ScoredIt
   out << "<h2 id=\"item-" << s.number << "\">" << s.number << " " << htmlEscape(s.item.name)
       << " &mdash; " << fmt(s.score) << " / " << fmt(s.item.points) << "</h2>\n";
   if (const NamedMistake* m = mistakeOf(report, s)) {
-    out << "<p class=\"mistake\"><strong>The mistake, named:</strong> " << htmlEscape(m->text)
-        << "</p>\n";
+    out << "<p class=\"mistake\"><strong>"
+        << (m->measuredOnly ? "What the grader measured:" : "The mistake, named:") << "</strong> "
+        << htmlEscape(m->text) << "</p>\n";
   }
   if (s.tests.empty()) {
     out << "<p class=\"fail\">No test matched this item.</p>\n";

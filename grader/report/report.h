@@ -33,6 +33,9 @@ struct GradeReport {
   /// The known mistakes the answers of failing tasks matched (grader/mistakes/), in task order:
   /// each failed item of its task leads with the mistake's sentence.
   std::vector<NamedMistake> mistakes;
+  /// What the designed inputs measured of each failing task (mistakes/measure.h), whether or not
+  /// the catalogue named a mistake there: for instructors (results.json's extra_data).
+  std::vector<NamedMistake> diagnoses;
   /// Each imaged scene's run beside the reference's (grader/replay/): the report's players.
   std::vector<ReplayView> replays;
   double score = 0;          ///< regular points plus extra credit

@@ -161,13 +161,35 @@ std::string summary(const Graded& g) {
   return out.str();
 }
 
-// The ids of the known mistakes results.json names (extra_data.mistakes).
+// The ids of the mistakes results.json names (extra_data.mistakes), not counting the plain
+// measurements (measured_only: no part singled out, nothing named).
 std::set<std::string> mistakesNamed(const json& results) {
   std::set<std::string> ids;
   for (const json& m : results["extra_data"].value("mistakes", json::array())) {
-    ids.insert(m.value("mistake", std::string()));
+    if (!m.value("measured_only", false)) ids.insert(m.value("mistake", std::string()));
   }
   return ids;
+}
+
+// The ids of the diagnoses by measurement (extra_data.diagnoses), whatever the catalogue named.
+std::set<std::string> diagnoses(const json& results) {
+  std::set<std::string> ids;
+  for (const json& m : results["extra_data"].value("diagnoses", json::array())) {
+    ids.insert(m.value("diagnosis", std::string()));
+  }
+  return ids;
+}
+
+// The diagnosis by measurement of a wrong version is its EXPECT's "diagnosis:" (none without one):
+// a change of the designed inputs or the fits that renames a part, or blames another, fails here.
+void expectDiagnosis(const Graded& g, const std::string& name) {
+  const std::string id = a6::test::staging::expectedDiagnosis(name);
+  const std::set<std::string> found = diagnoses(g.results);
+  std::printf("[ diagnosis] %s: expected %s, measured %s\n", name.c_str(),
+              id.empty() ? "none" : id.c_str(), json(found).dump().c_str());
+  EXPECT_EQ(found, id.empty() ? std::set<std::string>{} : std::set<std::string>{id})
+      << name << ": if the new diagnosis is right, write 'diagnosis: <id>' in tests/wrong/" << name
+      << "/EXPECT";
 }
 
 // A correct solution is never told it made a known mistake: none in extra_data, none on an item.
@@ -480,6 +502,7 @@ TEST_P(WrongVersion, LosesPointsOnlyInItsTasks) {
   for (const int t : failing) named += (named.empty() ? "" : " ") + std::to_string(t);
   printScores(g, name, named, points);
   expectMistakeNamed(g, name, failing);
+  expectDiagnosis(g, name);
   expectWrongReplays(dir / "out", name, failing);
   expectNoFailureOutsideItsTasks(g, name, failing, named);
   expectPointsLostOnlyInItsTasks(g, name, failing, named, points);

@@ -168,18 +168,27 @@ inline std::set<int> failingTasks(const std::string& name) {
   return tasks;
 }
 
-/// The known mistake the grader must name for a wrong version: its EXPECT file's "mistake: <id>"
-/// line (grader/mistakes/library/), or "" when it has none.
-inline std::string expectedMistake(const std::string& name) {
+/// The first word after "<key>:" in a wrong version's EXPECT file, or "" when it has none.
+inline std::string expected(const std::string& name, const std::string& key) {
   std::istringstream in(readAll(kSource / "tests" / "wrong" / name / "EXPECT"));
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind("mistake:", 0) != 0) continue;
-    std::istringstream id(line.substr(8));
+    if (line.rfind(key + ":", 0) != 0) continue;
+    std::istringstream id(line.substr(key.size() + 1));
     std::string word;
     id >> word;
     return word;
   }
   return "";
+}
+
+/// The known mistake the grader must name for a wrong version: its EXPECT file's "mistake: <id>"
+/// line (grader/mistakes/library/), or "" when it has none.
+inline std::string expectedMistake(const std::string& name) { return expected(name, "mistake"); }
+
+/// What the diagnosis by measurement must give for a wrong version (grader/mistakes/measure.h):
+/// its EXPECT file's "diagnosis: <id>" line, or "" when it must give nothing.
+inline std::string expectedDiagnosis(const std::string& name) {
+  return expected(name, "diagnosis");
 }
 
 // ---- archives -----------------------------------------------------------------------------------
