@@ -19,6 +19,7 @@ set(a6_grading_sources
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/budgeted_student.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/recording_student.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/checks/runs.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/checks/divergence.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/build/startup.cpp)
 add_library(a6_grading OBJECT ${a6_grading_sources})
 a6_bundled(a6_grading 4 ${a6_grading_sources})  # in two bundles (cmake/A6FastBuild.cmake)

@@ -122,14 +122,29 @@ example_student_summary() {
 }
 
 # The first failed check of a wrong spring, as its grading wrote it (the ctest entry
-# wrong_t1_wrong_sign, which ctest runs before this one; by hand, the grading is made here).
+# wrong_t1_wrong_sign, which ctest runs before this one; by hand, the grading is made here): the
+# report leaves out the check's hint where it names the mistake, so the example ends at the
+# message's last line.
 example_failure_message() {
   local results="$build/tests/grader/scores_out/wrong_t1_wrong_sign/out/results.json"
   if [ ! -f "$results" ]; then
     "$build/tests/grader/a6_graded_wrong_t1_wrong_sign" --out "$scratch/t1_wrong_sign" >/dev/null
     results="$scratch/t1_wrong_sign/results.json"
   fi
-  jq -r '.tests[].output' "$results" | awk '/^Task 1 \(spring.cpp\)/ { on = 1 } on { print } on && /hint:/ { exit }'
+  jq -r '.tests[].output' "$results" | awk '/^Task 1 \(spring.cpp\)/ { on = 1 } on && /^$/ { exit } on { print }'
+}
+
+# A diagnosis by measurement of a spring force with two mistakes, as its grading named it (the
+# ctest entry wrong_c1_direction_not_normalised; by hand, the grading is made here).
+example_diagnosis() {
+  local name=c1_direction_not_normalised
+  local results="$build/tests/grader/scores_out/wrong_$name/out/results.json"
+  if [ ! -f "$results" ]; then
+    "$build/tests/grader/a6_graded_wrong_$name" --out "$scratch/$name" >/dev/null
+    results="$scratch/$name/results.json"
+  fi
+  jq -r '.extra_data.diagnoses[] | select(.task == 1) | .text' "$results" | fold -s -w 96 |
+    sed 's/ *$//'
 }
 
 # ---- markers and blocks ----------------------------------------------------------------------

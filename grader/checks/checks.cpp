@@ -291,6 +291,35 @@ int checkRubricAgainstChecks(const Rubric& rubric) {
   return 0;
 }
 
+namespace {
+
+// After every check has been collected, while the probe is up: what the report adds (so none of
+// it can change a score). The incidents first; then the replays, the diagnosis's designed inputs
+// and the failed stepping checks' first divergences.
+void afterTheChecks(const ChecksInput& in, ProbePair* probes, BudgetedStudent& student,
+                    const RecordingStudent& recorded, ChecksRun& run) {
+  noting("counting the incidents", run.notes, [&] {
+    if (probes != nullptr) collectIncidents(*probes, student, run);
+  });
+  // A student release has no reference replays, and so no replays.
+  noting("running the replays", run.notes, [&] {
+    run.replayFolder = a6::test::replayFolder();
+    if (in.replays && fs::is_directory(run.replayFolder)) {
+      run.replays = runReplays(student, a6::test::imagedScenes());
+      run.particleTrajectories =
+          runParticleTrajectories(student, recorded.transcript(), failedChecks(run.tests));
+    }
+  });
+  noting("asking the diagnosis's inputs", run.notes,
+         [&] { run.measured = askDesigned(student, in.designed); });
+  noting("finding the first divergences", run.notes, [&] {
+    run.divergences =
+        findDivergences(student, recorded.transcript(), failedChecks(run.tests), in.reference);
+  });
+}
+
+}  // namespace
+
 ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
   ChecksRun run;
   std::string unavailable = in.unavailable;
@@ -328,23 +357,7 @@ ChecksRun runChecks(const ChecksInput& in, const Rubric& rubric) {
                          " checks were skipped (the grader's environment could not run them; see "
                          "each check's message): they earned nothing");
   }
-  if (code != nullptr) {
-    noting("counting the incidents", run.notes, [&] {
-      if (probes != nullptr) collectIncidents(*probes, student, run);
-    });
-    // After the incidents are counted: the replays are feedback, never a check's. A student
-    // release has no reference replays, and so no replays.
-    noting("running the replays", run.notes, [&] {
-      run.replayFolder = a6::test::replayFolder();
-      if (in.replays && fs::is_directory(run.replayFolder)) {
-        run.replays = runReplays(student, a6::test::imagedScenes());
-        run.particleTrajectories =
-            runParticleTrajectories(student, recorded.transcript(), failedChecks(run.tests));
-      }
-    });
-    noting("asking the diagnosis's inputs", run.notes,
-           [&] { run.measured = askDesigned(student, in.designed); });
-  }
+  if (code != nullptr) afterTheChecks(in, probes.get(), student, recorded, run);
   gStudent = nullptr;
   run.transcript = recorded.takeTranscript();
   return run;

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "checks/divergence.h"
 #include "checks/outcome.h"
 #include "checks/scene_run.h"
 #include "checks/transcript.h"
@@ -72,6 +73,9 @@ struct ChecksInput {
   harness::StudentCode* linked = nullptr;
   /// Asked after every check has been collected (so they change no score), for the diagnosis.
   std::vector<Designed> designed;
+  /// The reference steppers the failed stepping checks restart from (checks/divergence.h;
+  /// empty: no divergence is looked for).
+  ReferenceSteppers reference;
 };
 
 struct ChecksRun {
@@ -80,8 +84,9 @@ struct ChecksRun {
   std::vector<std::string> notes;   ///< for instructors (sandbox protections, restarts)
   std::string probeOutput;          ///< what the probes printed, capped
   Incidents incidents;
-  Transcript transcript;          ///< what the public checks asked and the student's code answered
-  Transcript measured;            ///< the designed inputs' answers (labels as `check`)
+  Transcript transcript;  ///< what the public checks asked and the student's code answered
+  Transcript measured;    ///< the designed inputs' answers (labels as `check`)
+  std::vector<Divergence> divergences;  ///< the failed stepping checks' first divergences
   std::vector<SceneRun> replays;  ///< the imaged scenes run again at replay frames, for the report
   std::filesystem::path replayFolder;  ///< the reference replays (render/replay.h) beside them
   /// Failed particle checks' runs asked again at many step counts, for the report.

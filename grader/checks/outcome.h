@@ -36,4 +36,13 @@ struct Incidents {
   int crashes = 0, timeouts = 0, startFailures = 0;
 };
 
+/// A failed stepping check's first divergence (checks/divergence.h).
+struct Divergence {
+  std::string check;     ///< the failed check whose run it restarted
+  int step = 0;          ///< the first step (1-based) whose student step departs; 0: none did
+  int steps = 0;         ///< the steps it restarted from
+  std::string quantity;  ///< "particle 2's velocity", "the count of particles"
+  std::string text;      ///< one sentence for the student
+};
+
 }  // namespace a6::grader

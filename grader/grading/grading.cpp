@@ -332,7 +332,13 @@ void Grading::check() {
   in.filter = options_.filter;
   in.progress = !options_.quiet;
   in.replays = options_.filter.empty();
-  if (options_.filter.empty()) in.designed = designedInputs();
+  if (options_.filter.empty()) {
+    in.designed = designedInputs();
+    in.reference.simulate = [](const harness::SimulateRequest& r) {
+      return r.implicit ? referenceImplicitSimulation(r) : referenceSimulation(r);
+    };
+    in.reference.particles = referenceParticleRun;
+  }
   if (!options_.quiet)
     std::fprintf(stderr, "a6_grade: running the checks (seed %llu)\n",
                  static_cast<unsigned long long>(report_.seed));
@@ -350,6 +356,7 @@ void Grading::check() {
   report_.incidents.startFailures += run.incidents.startFailures;
   transcript_ = std::move(run.transcript);
   measured_ = std::move(run.measured);
+  report_.divergences = std::move(run.divergences);
   sceneRuns_ = std::move(run.replays);
   particleTrajectories_ = std::move(run.particleTrajectories);
   replayFolder_ = run.replayFolder;
@@ -386,8 +393,12 @@ void Grading::nameMistakes() {
 void Grading::buildReplays() {
   try {
     report_.replays = grader::buildReplays(sceneRuns_, replayFolder_);
-    for (ReplayView& v : trajectoryReplays(transcript_, failedChecks(report_.tests)))
+    for (ReplayView& v : trajectoryReplays(transcript_, failedChecks(report_.tests))) {
+      for (const Divergence& d : report_.divergences) {
+        if (d.check == v.scene) v.divergence = d.text;
+      }
       report_.replays.push_back(std::move(v));
+    }
     for (ReplayView& v : particleTrajectoryReplays(particleTrajectories_))
       report_.replays.push_back(std::move(v));
   } catch (const std::exception& e) {

@@ -51,6 +51,12 @@ const std::vector<MistakeModel>& mistakeLibrary();
 /// forces).
 std::optional<harness::SimulateResult> referenceSimulation(const harness::SimulateRequest& r);
 
+/// The reference's answer to an implicit simulation the checks of task 7 asked for (the reference
+/// implicit step with the reference forces), for the first divergence; empty without the library,
+/// or for a request it cannot answer.
+std::optional<harness::SimulateResult> referenceImplicitSimulation(
+    const harness::SimulateRequest& r);
+
 /// The reference's answer to a run of particles already alive that the checks of task 5 asked
 /// for (no emission, the reference forces; the library's, library/steppers.h), for the report's
 /// replays; empty without the library, or for a request it cannot answer.

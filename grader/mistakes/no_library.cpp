@@ -14,6 +14,11 @@ std::optional<harness::SimulateResult> referenceSimulation(const harness::Simula
   return std::nullopt;
 }
 
+std::optional<harness::SimulateResult> referenceImplicitSimulation(
+    const harness::SimulateRequest&) {
+  return std::nullopt;
+}
+
 std::optional<harness::ParticlesResult> referenceParticleRun(const harness::ParticleRunRequest&) {
   return std::nullopt;
 }

@@ -27,6 +27,7 @@ struct ReplayView {
   int parted = -1;            ///< the first frame index whose error passes the threshold
   std::string reading;        ///< one sentence: what the plot's shape means
   std::string missing;        ///< why there is no replay ("" when there is one)
+  std::string divergence;     ///< a failed check's first divergence (checks/divergence.h), or ""
 };
 
 }  // namespace a6::grader

@@ -100,7 +100,11 @@ void replayBlock(std::ostringstream& out, const ReplayView& v) {
            "reference's, both with the reference forces, stopped after each of "
         << v.frames.size() - 1 << " step counts.</p>\n";
   }
-  out << "<p class=\"reading\">" << htmlEscape(v.reading) << "</p>\n<div class=\"replay\">";
+  out << "<p class=\"reading\">" << htmlEscape(v.reading) << "</p>\n";
+  if (!v.divergence.empty())
+    out << "<p class=\"reading\"><strong>First divergence:</strong> " << htmlEscape(v.divergence)
+        << "</p>\n";
+  out << "<div class=\"replay\">";
   player(out, v);
   plots(out, v);
   out << "<script type=\"application/json\" class=\"replay-data\">{\"parted\": " << v.parted

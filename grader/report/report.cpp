@@ -112,8 +112,34 @@ std::string firstHint(const ScoredItem& s) {
   return "";
 }
 
-// The text Gradescope shows under an item: the known mistake, or else the first hint; why the
-// task used the starter; each failing test with its message; the precision note.
+// The first divergences of an item's failed checks, one sentence each, or "".
+std::string divergencesOf(const GradeReport& report, const ScoredItem& s) {
+  std::string out;
+  for (const TestOutcome* t : s.tests) {
+    for (const Divergence& d : report.divergences) {
+      if (!t->passed && d.check == t->name) out += d.check + ": " + d.text + "\n";
+    }
+  }
+  return out;
+}
+
+// A failed check's message as the item shows it: where the task has a named mistake or a
+// measurement (mistakeOf), without the check's own hint lines, which guess from which check
+// failed and may blame a part that measured right (mistakes/measure.h).
+std::string shownMessage(const GradeReport& report, const ScoredItem& s, const TestOutcome& t) {
+  if (mistakeOf(report, s) == nullptr) return t.message;
+  std::istringstream in(t.message);
+  std::string out;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("hint: ") == std::string::npos) out += line + "\n";
+  }
+  if (!out.empty() && (t.message.empty() || t.message.back() != '\n')) out.pop_back();
+  return out;
+}
+
+// The text Gradescope shows under an item: the known mistake or the measurement, or else the
+// first hint; why the task used the starter; each failing test with its message; the precision
+// note.
 std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
   std::string out;
   if (const NamedMistake* m = mistakeOf(report, s)) {
@@ -121,6 +147,7 @@ std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
   } else if (const std::string hint = firstHint(s); !hint.empty()) {
     out += hint + "\n\n";
   }
+  if (const std::string d = divergencesOf(report, s); !d.empty()) out += d + "\n";
   if (const TaskBuild* t = buildOf(report, s.item.task); t != nullptr && t->usesStarter()) {
     out += t->file + " " + buildWords(*t).sentence + ".\n";
     if (!t->messages.empty())
@@ -138,7 +165,8 @@ std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
            (s.item.allOrNothing ? " (all-or-nothing: no points)" : "") + ":\n";
     for (const TestOutcome* t : s.tests) {
       if (t->passed) continue;
-      out += "\nFAILED " + t->name + "\n" + cap(t->message, kMessageCap, "") + "\n";
+      out +=
+          "\nFAILED " + t->name + "\n" + cap(shownMessage(report, s, *t), kMessageCap, "") + "\n";
     }
   }
   out += precisionNote(s);
@@ -287,6 +315,12 @@ Json extraData(const GradeReport& report) {
                          {"measured_only", m.measuredOnly}});
   }
   extra["diagnoses"] = std::move(diagnoses);
+  Json divergences = Json::array();
+  for (const Divergence& d : report.divergences) {
+    divergences.push_back(
+        {{"check", d.check}, {"step", d.step}, {"steps", d.steps}, {"quantity", d.quantity}});
+  }
+  extra["divergences"] = std::move(divergences);
   extra["warnings"] = report.warnings;
   extra["notes"] = report.notes;
   extra["errors"] = report.errors;
@@ -478,6 +512,10 @@ void htmlItem(std::ostringstream& out, const GradeReport& report, const ScoredIt
         << (m->measuredOnly ? "What the grader measured:" : "The mistake, named:") << "</strong> "
         << htmlEscape(m->text) << "</p>\n";
   }
+  if (const std::string d = divergencesOf(report, s); !d.empty()) {
+    out << "<p class=\"divergence\"><strong>First divergence:</strong> " << htmlEscape(d)
+        << "</p>\n";
+  }
   if (s.tests.empty()) {
     out << "<p class=\"fail\">No test matched this item.</p>\n";
     return;
@@ -486,7 +524,7 @@ void htmlItem(std::ostringstream& out, const GradeReport& report, const ScoredIt
   for (const TestOutcome* t : s.tests) {
     out << "<tr><td><code>" << htmlEscape(t->name) << "</code>";
     if (!t->passed && !t->message.empty()) {
-      out << "<pre>" << htmlEscape(cap(t->message, 32u << 10, "")) << "</pre>";
+      out << "<pre>" << htmlEscape(cap(shownMessage(report, s, *t), 32u << 10, "")) << "</pre>";
     }
     htmlImages(out, *t);
     out << "</td><td class=\"" << (t->passed ? "pass\">passed" : "fail\">failed")

@@ -36,6 +36,9 @@ struct GradeReport {
   /// What the designed inputs measured of each failing task (mistakes/measure.h), whether or not
   /// the catalogue named a mistake there: for instructors (results.json's extra_data).
   std::vector<NamedMistake> diagnoses;
+  /// The failed stepping checks' first divergences (checks/divergence.h): each failed item of
+  /// their task shows its checks'.
+  std::vector<Divergence> divergences;
   /// Each imaged scene's run beside the reference's (grader/replay/): the report's players.
   std::vector<ReplayView> replays;
   double score = 0;          ///< regular points plus extra credit

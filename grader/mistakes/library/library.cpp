@@ -22,6 +22,11 @@ std::optional<harness::SimulateResult> referenceSimulation(const harness::Simula
   return reference::simulate(r, reference::StepForm{});
 }
 
+std::optional<harness::SimulateResult> referenceImplicitSimulation(
+    const harness::SimulateRequest& r) {
+  return reference::simulateImplicit(r, reference::ImplicitForm{});
+}
+
 std::optional<harness::ParticlesResult> referenceParticleRun(const harness::ParticleRunRequest& r) {
   return reference::runParticles(r, reference::ParticleFlaw::None);
 }

@@ -50,6 +50,11 @@ std::string power(const std::string& name, double p) {
   return name + "^" + number(a);
 }
 
+// "m", "1/m", "m²", "1/m²": a variable to a power, its sign shown (a factor's own words).
+std::string signedPower(const std::string& name, double p) {
+  return p < 0 ? "1/" + power(name, p) : power(name, p);
+}
+
 // The factor C · Π v^p as the slide would write it: "2", "kd/ks", "l", "1/m".
 std::string factorWords(double c, const std::vector<Variable>& vars, const std::vector<double>& p) {
   std::string top, bottom;
@@ -95,8 +100,8 @@ std::string ratioWords(const Part& part, double c, const std::vector<double>& p)
       if (p[k] == -v.power) {
         how += ", so it leaves out the factor " + power(v.name, v.power);
       } else if (v.power != 0) {
-        how += ", so it goes with " + power(v.name, v.power + p[k]) +
-               " where the physics' goes with " + power(v.name, v.power);
+        how += ", so it goes with " + signedPower(v.name, v.power + p[k]) +
+               " where the physics' goes with " + signedPower(v.name, v.power);
       } else {
         how += std::string(", so it ") + (p[k] > 0 ? "grows" : "shrinks") + " with " +
                power(v.name, p[k]) + " where the physics' does not";

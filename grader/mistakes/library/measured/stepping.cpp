@@ -248,7 +248,7 @@ SimulateRequest implicitRequest(double h, const Vec2& va, const Vec2& vb, const 
 std::vector<Vec2> rowTerms(const SimulateRequest& r, const Forces& f, const std::vector<Vec2>& dv,
                            std::size_t i) {
   const double h = r.frameDt;
-  std::vector<Vec2> t(8, Vec2::Zero());
+  std::vector<Vec2> t(9, Vec2::Zero());
   t[0] = h * (f.external[i] + f.onP2[i] + f.onP1[i]);
   for (const SpringData& d : r.springs) {
     const std::size_t a = static_cast<std::size_t>(d.i), b = static_cast<std::size_t>(d.j);
@@ -260,6 +260,7 @@ std::vector<Vec2> rowTerms(const SimulateRequest& r, const Forces& f, const std:
     t[3] += h * h * dfdx * dv[i], t[4] -= h * h * dfdx * dv[other];
     t[5] += (i == b ? 1.0 : -1.0) * h * h * dfdx * (r.particles[b].v - r.particles[a].v);
     t[6] += h * dfdx * dv[i], t[7] -= h * dfdx * dv[other];
+    t[8] += (i == b ? 1.0 : -1.0) * h * dfdx * (r.particles[b].v - r.particles[a].v);
   }
   return t;
 }
@@ -278,7 +279,8 @@ Part systemPart() {
            {"the neighbour's -h² dfdx Δv_j (an off-diagonal block)"},
            {"h² dfdx (v_j - v_i) on the right-hand side"},
            {"h dfdx Δv_i", 0, 3},
-           {"the neighbour's -h dfdx Δv_j", 0, 4}},
+           {"the neighbour's -h dfdx Δv_j", 0, 4},
+           {"h dfdx (v_j - v_i) on the right-hand side", 0, 5}},
           {}};
 }
 
