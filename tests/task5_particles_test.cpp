@@ -392,6 +392,24 @@ TEST(Task5Particles, CarriesFractionalEmissionsOver) {
   }
 }
 
+// The slide's update emits first, then moves, cools and ages every particle: a particle born in
+// an update is dt old after it (one emitted after the loop would still be 0 s old).
+TEST(Task5Particles, ANewParticleIsAgedInItsFirstUpdate) {
+  auto r = run({}, 1);
+  r.emitter.rate = 64;  // one particle in the step of 1/64 s
+  r.emitter.lifetimeMin = 100, r.emitter.lifetimeMax = 200;
+  const auto result = simulate(r);
+  A6_ASSERT_RAN(result);
+  ASSERT_EQ(result.particles.size(), 1u)
+      << currentTask() << ": live particles after one update, " << input(r)
+      << hint("each update emits emissionCount(dt) particles and pushes them onto `particles`");
+  EXPECT_CLOSE(result.particles[0].age, kDt, relativeTo(kDt))
+      << currentTask() << ": the age of the particle born in this update, after it, " << input(r)
+      << hint(
+             "emit first, then move, cool and age every particle, the new ones too: a particle "
+             "born in an update is dt old after it");
+}
+
 TEST(Task5Particles, OneStepIsSymplecticEuler) {
   const Vec2 x0(0.5, 2.0), v0(1.5, -0.25);
   auto r = run({particle(x0, v0, 2.5)}, 1);
