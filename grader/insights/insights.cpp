@@ -116,6 +116,15 @@ void readExtra(const Json& extra, SubmissionResult& s) {
   s.incidents.timeouts = countAt(incidents, "timeouts");
   s.incidents.startFailures = countAt(incidents, "start_failures");
   s.build = brokenFiles(objectAt(extra, "build"));
+  const auto diagnoses = extra.find("diagnoses");
+  if (diagnoses == extra.end() || !diagnoses->is_array()) return;
+  for (const Json& d : *diagnoses) {
+    if (s.diagnoses.size() >= 16) break;  // one per task: more is not the grader's
+    const std::string id = stringAt(d, "diagnosis");
+    if (!id.empty())
+      s.diagnoses.push_back(
+          {id.substr(0, 120), stringAt(d, "text").substr(0, 2000), countAt(d, "task"), {}});
+  }
 }
 
 // a6_batch's marker (batch.json) of a submission that has no results: why.
@@ -281,6 +290,29 @@ void addMistakes(const SubmissionResult& s, std::map<std::string, MistakeStats>&
   }
 }
 
+// Each diagnosed part of a submission, counted once per submission.
+void addDiagnoses(const SubmissionResult& s, std::map<std::string, MistakeStats>& parts) {
+  std::set<std::string> seen;
+  for (const MistakeStats& d : s.diagnoses) {
+    if (!seen.insert(d.id).second) continue;
+    MistakeStats& m = parts[d.id];
+    m.id = d.id;
+    m.task = d.task;
+    if (m.example.empty()) m.example = d.example;
+    m.who.push_back(s.key);
+  }
+}
+
+// The stats of `byId` in a list, most often first.
+std::vector<MistakeStats> mostOftenFirst(std::map<std::string, MistakeStats>& byId) {
+  std::vector<MistakeStats> out;
+  for (auto& [id, m] : byId) out.push_back(std::move(m));
+  std::stable_sort(out.begin(), out.end(), [](const MistakeStats& a, const MistakeStats& b) {
+    return a.who.size() > b.who.size();
+  });
+  return out;
+}
+
 // Points lost per item: what it is worth times the gradings, less what they got.
 void finishItems(std::map<std::string, ItemStats>& items, ClassInsights& c) {
   for (auto& [key, st] : items) {
@@ -328,12 +360,13 @@ ClassInsights summarize(std::vector<SubmissionResult> submissions) {
             [](const SubmissionResult& a, const SubmissionResult& b) { return a.key < b.key; });
   std::map<std::string, ItemStats> items;
   std::map<std::string, CheckStats> checks;
-  std::map<std::string, MistakeStats> mistakes;
+  std::map<std::string, MistakeStats> mistakes, parts;
   for (const SubmissionResult& s : submissions) {
     if (!s.total) continue;
     ++c.graded;
     addItems(s, items);
     addMistakes(s, mistakes);
+    addDiagnoses(s, parts);
     for (const auto& [name, passed] : s.checks) {
       CheckStats& st = checks[name];
       st.name = name;
@@ -347,10 +380,8 @@ ClassInsights summarize(std::vector<SubmissionResult> submissions) {
     if (s.total) costChecks(s, items, checks);
   }
   for (auto& [name, st] : checks) c.checks.push_back(st);
-  for (auto& [id, m] : mistakes) c.mistakes.push_back(m);
-  std::stable_sort(
-      c.mistakes.begin(), c.mistakes.end(),
-      [](const MistakeStats& a, const MistakeStats& b) { return a.who.size() > b.who.size(); });
+  c.mistakes = mostOftenFirst(mistakes);
+  c.parts = mostOftenFirst(parts);
   flagChecks(c);
   c.submissions = std::move(submissions);
   return c;

@@ -34,6 +34,12 @@ struct Incidents {
   int crashes = 0, timeouts = 0, startFailures = 0;
 };
 
+struct MistakeStats {
+  std::string id, example;  ///< example: the message one student got
+  int task = 0;
+  std::vector<std::string> who;  ///< the submissions it was named for
+};
+
 /// One submission: its results, or why there are none.
 struct SubmissionResult {
   std::string key;     ///< its name in the batch (a6_batch's folder) or Gradescope's submitters
@@ -45,6 +51,9 @@ struct SubmissionResult {
   std::string build;    ///< the task files that did not compile ("" when all did)
   std::vector<ItemResult> items;
   std::map<std::string, bool> checks;  ///< each check the grading ran: passed?
+  /// The diagnosis by measurement of each failing task (extra_data.diagnoses): its id (the
+  /// task and the parts, "t1_elastic"), its task and its sentence.
+  std::vector<MistakeStats> diagnoses;
   Incidents incidents;
 };
 
@@ -86,12 +95,6 @@ struct CheckStats {
   double passRate() const { return ran == 0 ? 0 : double(passed) / ran; }
 };
 
-struct MistakeStats {
-  std::string id, example;  ///< example: the message one student got
-  int task = 0;
-  std::vector<std::string> who;  ///< the submissions it was named for
-};
-
 /// A check to look at: nearly everyone fails it (is it broken, or the lesson missing?) or
 /// nobody does (does it catch anything?).
 struct Flag {
@@ -104,6 +107,7 @@ struct ClassInsights {
   std::vector<ItemStats> items;               ///< by number
   std::vector<CheckStats> checks;             ///< by name
   std::vector<MistakeStats> mistakes;         ///< most often named first
+  std::vector<MistakeStats> parts;            ///< the diagnosed parts, most often first
   std::vector<Flag> flags;
   int graded = 0;  ///< submissions with a grade
 };

@@ -215,6 +215,28 @@ void mistakesSection(std::ostringstream& out, const ClassInsights& c) {
   out << "</tbody></table>\n";
 }
 
+// The class by diagnosed part (mistakes/measure.h): which parts of the slide's laws the
+// measurement found wrong, whatever the catalogue named.
+void partsSection(std::ostringstream& out, const ClassInsights& c) {
+  out << "<h2 id=\"parts\">Diagnosed parts</h2>\n";
+  if (c.parts.empty()) {
+    out << "<p class=\"note\">The measurement found no part wrong in any submission.</p>\n";
+    return;
+  }
+  out << "<p>The parts the grader's measurement found wrong (the task and the parts; "
+         "<code>_measured</code>: differs, no single change explains it), with what one student "
+         "was told.</p>\n<table class=\"sortable\"><thead><tr><th>parts</th><th>task</th>"
+         "<th>submissions</th><th>example message</th><th>who</th></tr></thead><tbody>\n";
+  for (const MistakeStats& m : c.parts) {
+    std::string who;
+    for (const std::string& k : m.who) who += (who.empty() ? "" : ", ") + htmlEscape(k);
+    out << "<tr><td><code>" << htmlEscape(m.id) << "</code></td>" << numCell(m.task, 0)
+        << numCell(static_cast<double>(m.who.size()), 0) << "<td>" << htmlEscape(m.example)
+        << "</td><td>" << who << "</td></tr>\n";
+  }
+  out << "</tbody></table>\n";
+}
+
 void incidentsSection(std::ostringstream& out, const ClassInsights& c) {
   out << "<h2 id=\"incidents\">Incidents</h2>\n<table class=\"sortable\"><thead><tr><th>"
          "submission</th><th>what happened</th></tr></thead><tbody>\n";
@@ -322,7 +344,8 @@ void header(std::ostringstream& out, const ClassInsights& c, const PageInput& in
   for (const std::string& n : in.notes) out << "<p class=\"note\">" << htmlEscape(n) << "</p>\n";
   out << "<p><a href=\"#distribution\">distribution</a> &middot; <a href=\"#items\">rubric items"
          "</a> &middot; <a href=\"#look\">checks to look at</a> &middot; <a href=\"#mistakes\">"
-         "mistakes</a> &middot; <a href=\"#incidents\">incidents</a> &middot; <a href=\"#similarity"
+         "mistakes</a> &middot; <a href=\"#parts\">diagnosed parts</a> &middot; <a "
+         "href=\"#incidents\">incidents</a> &middot; <a href=\"#similarity"
          "\">similarity</a> &middot; <a href=\"#submissions\">submissions</a> &middot; <a href=\""
          "#checks\">checks</a></p>\n";
 }
@@ -336,6 +359,7 @@ std::string insightsHtml(const ClassInsights& c, const PageInput& in) {
   itemsTable(out, c);
   flagsSection(out, c);
   mistakesSection(out, c);
+  partsSection(out, c);
   incidentsSection(out, c);
   similaritySection(out, in.similarity);
   submissionsTable(out, c);

@@ -86,6 +86,34 @@ TEST(Insights, TheClassNumbersCountEachSubmissionOnce) {
   EXPECT_TRUE(c.flags.empty()) << "3 graded submissions are too few to judge a check";
 }
 
+// The class by diagnosed part: each results.json's extra_data.diagnoses, counted once per
+// submission, most often first, with one student's sentence; junk in the list is left out.
+TEST(Insights, TheClassIsGroupedByDiagnosedPart) {
+  const auto with = [](const std::string& diagnoses) {
+    std::string text = results(6, false);
+    text.insert(text.rfind("}}"), R"J(, "diagnoses": )J" + diagnoses);
+    return text;
+  };
+  const std::string elastic =
+      R"J({"task": 1, "diagnosis": "t1_elastic", "text": "Your elastic term is 2 times"})J";
+  std::vector<SubmissionResult> all;
+  all.push_back(readResults("a", with("[" + elastic + ", " + elastic + "]")));
+  all.push_back(readResults("b", with("[" + elastic + R"J(, 7, {"diagnosis": 3},
+      {"task": 7, "diagnosis": "t7_measured", "text": "Your dfdx differs"}])J")));
+  all.push_back(readResults("c", with(R"J("not a list")J")));
+  ASSERT_TRUE(all[1].total.has_value()) << all[1].problem;
+  const ClassInsights c = summarize(all);
+  ASSERT_EQ(c.parts.size(), 2u);
+  EXPECT_EQ(c.parts[0].id, "t1_elastic");
+  EXPECT_EQ(c.parts[0].task, 1);
+  EXPECT_EQ(c.parts[0].who, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(c.parts[0].example, "Your elastic term is 2 times");
+  EXPECT_EQ(c.parts[1].id, "t7_measured");
+  const std::string page = insightsHtml(c, PageInput{"A6", "out", {}, nullptr});
+  EXPECT_NE(page.find("<h2 id=\"parts\">Diagnosed parts</h2>"), std::string::npos);
+  EXPECT_NE(page.find("<td><code>t1_elastic</code></td>"), std::string::npos);
+}
+
 // A grading of one item worth 12 that names its checks A and B, and which of them failed.
 std::string costedResults(double score, bool aPassed, bool bPassed) {
   const auto status = [](bool passed) { return std::string(passed ? "passed" : "failed"); };
