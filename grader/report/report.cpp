@@ -112,12 +112,12 @@ std::string firstHint(const ScoredItem& s) {
   return "";
 }
 
-// The first divergences of an item's failed checks, one sentence each, or "".
-std::string divergencesOf(const GradeReport& report, const ScoredItem& s) {
-  std::string out;
+// The first divergences of an item's failed checks (checks/divergence.h), in its checks' order.
+std::vector<const Divergence*> divergencesOf(const GradeReport& report, const ScoredItem& s) {
+  std::vector<const Divergence*> out;
   for (const TestOutcome* t : s.tests) {
     for (const Divergence& d : report.divergences) {
-      if (!t->passed && d.check == t->name) out += d.check + ": " + d.text + "\n";
+      if (!t->passed && d.check == t->name) out.push_back(&d);
     }
   }
   return out;
@@ -147,7 +147,9 @@ std::string itemOutput(const GradeReport& report, const ScoredItem& s) {
   } else if (const std::string hint = firstHint(s); !hint.empty()) {
     out += hint + "\n\n";
   }
-  if (const std::string d = divergencesOf(report, s); !d.empty()) out += d + "\n";
+  const std::vector<const Divergence*> divergences = divergencesOf(report, s);
+  for (const Divergence* d : divergences) out += d->check + ": " + d->text + "\n";
+  if (!divergences.empty()) out += "\n";
   if (const TaskBuild* t = buildOf(report, s.item.task); t != nullptr && t->usesStarter()) {
     out += t->file + " " + buildWords(*t).sentence + ".\n";
     if (!t->messages.empty())
@@ -512,9 +514,12 @@ void htmlItem(std::ostringstream& out, const GradeReport& report, const ScoredIt
         << (m->measuredOnly ? "What the grader measured:" : "The mistake, named:") << "</strong> "
         << htmlEscape(m->text) << "</p>\n";
   }
-  if (const std::string d = divergencesOf(report, s); !d.empty()) {
-    out << "<p class=\"divergence\"><strong>First divergence:</strong> " << htmlEscape(d)
-        << "</p>\n";
+  if (const std::vector<const Divergence*> ds = divergencesOf(report, s); !ds.empty()) {
+    out << "<p class=\"divergence\"><strong>First divergence</strong> (each failed step "
+           "check restarted from the physics' state before every step):</p>\n<ul>";
+    for (const Divergence* d : ds)
+      out << "<li><code>" << htmlEscape(d->check) << "</code>: " << htmlEscape(d->text) << "</li>";
+    out << "</ul>\n";
   }
   if (s.tests.empty()) {
     out << "<p class=\"fail\">No test matched this item.</p>\n";

@@ -277,10 +277,10 @@ Part systemPart() {
            {"the neighbour's -h dfdv Δv_j (an off-diagonal block)"},
            {"h² dfdx Δv_i"},
            {"the neighbour's -h² dfdx Δv_j (an off-diagonal block)"},
-           {"h² dfdx (v_j - v_i) on the right-hand side"},
+           {"h² dfdx (v_j - v_i) in b (the right-hand side)"},
            {"h dfdx Δv_i", 0, 3},
            {"the neighbour's -h dfdx Δv_j", 0, 4},
-           {"h dfdx (v_j - v_i) on the right-hand side", 0, 5}},
+           {"h dfdx (v_j - v_i) in b", 0, 5}},
           {}};
 }
 
