@@ -7,7 +7,7 @@ if(EXISTS ${a6_mistakes_dir}/library/library.cpp)
   set(a6_mistake_models)
   foreach(part library task1 task2 task3 task4 task5 task6 task7 parts measured/fit
                measured/spring measured/forces measured/stepping measured/cloth
-               measured/particles measured/diagnose)
+               measured/particles measured/joints measured/diagnose)
     list(APPEND a6_mistake_models ${a6_mistakes_dir}/library/${part}.cpp)
   endforeach()
 else()

@@ -21,4 +21,15 @@ inline double referenceJointStiffness(double massA, double massB, double hertz) 
   return mass * omega * omega;
 }
 
+/// b2LinearStiffness: the damping, N·s/m, of that spring with `ratio`: 2 m ratio ω.
+inline double referenceJointDamping(double massA, double massB, double hertz, double ratio) {
+  const double mass = massA > 0 && massB > 0 ? massA * massB / (massA + massB)
+                      : massA > 0            ? massA
+                                             : massB;
+  return 2 * mass * ratio * 2 * 3.14159265358979323846 * hertz;
+}
+
+/// The mouse joint's damping ratio.
+constexpr double kMouseDampingRatio = 0.7;
+
 }  // namespace a6::grader::reference

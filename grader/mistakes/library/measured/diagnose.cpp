@@ -30,9 +30,13 @@ struct MeasuredTask {
 
 const std::vector<MeasuredTask>& measuredTasks() {
   static const std::vector<MeasuredTask> tasks = {
-      {1, measured::measureSpringForce}, {2, measured::measureForces},
-      {3, measured::measureStepping},    {4, measured::measureCloth},
-      {5, measured::measureParticles},   {7, measureTask7},
+      {1, measured::measureSpringForce},
+      {2, measured::measureForces},
+      {3, measured::measureStepping},
+      {4, measured::measureCloth},
+      {5, measured::measureParticles},
+      {6, measured::measureJoints},
+      {7, measureTask7},
   };
   return tasks;
 }
@@ -82,6 +86,7 @@ const std::vector<Designed>& designedInputs() {
     measured::designStepping(out);
     measured::designCloth(out);
     measured::designParticles(out);
+    measured::designJoints(out);
     measured::designImplicit(out);
     return out;
   }();

@@ -305,6 +305,10 @@ Finding measure(const Part& part) {
 std::string number(double x) {
   if (std::abs(x) < 1e-12) x = 0;  // a rounding's leftover, not a value
   char text[32];
+  if (std::abs(x) >= 1e3 && std::abs(x) < 1e7) {  // "1250", not "1.25e+03"
+    std::snprintf(text, sizeof text, "%.0f", x);
+    return text;
+  }
   std::snprintf(text, sizeof text, "%.3g", x);
   return text;
 }

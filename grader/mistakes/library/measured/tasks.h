@@ -22,6 +22,8 @@ void designCloth(std::vector<Designed>& out);  // task 4
 std::vector<Finding> measureCloth(const Transcript& t);
 void designParticles(std::vector<Designed>& out);  // task 5
 std::vector<Finding> measureParticles(const Transcript& t);
+void designJoints(std::vector<Designed>& out);  // task 6
+std::vector<Finding> measureJoints(const Transcript& t);
 void designImplicit(std::vector<Designed>& out);  // task 7's step
 std::vector<Finding> measureImplicit(const Transcript& t);
 
