@@ -43,7 +43,8 @@ trimmed() { sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' "$@"; }
 # tests' too (they share their helpers and the harness's names).
 shopt -s nullglob
 answers=("$root"/solution/*.cpp)
-hidden_checks=("$root"/tests/hidden/* "$root"/grader/mistakes/library/* "$root"/grader/reference/*.{inc,h,cpp})
+hidden_checks=("$root"/tests/hidden/* "$root"/grader/mistakes/library/{,measured/}*.{h,cpp}
+  "$root"/grader/reference/*.{inc,h,cpp})
 # (Every test file outside the graders' folders: the library of known mistakes shares plain loops
 # with the scene tests, say.)
 mapfile -t public_tests < <(find "$root/tests" \( -path "$root/tests/hidden" -o -path "$root/tests/wrong" \

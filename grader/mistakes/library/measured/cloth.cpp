@@ -4,6 +4,7 @@
 // lengths and constants by type, and the pins. Each finding counts what was measured.
 #include "reference/cloth.h"
 
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -61,7 +62,7 @@ std::string placeOf(const Key& k, const ClothSpec& spec) {
   const int base = static_cast<int>(harness::clothPrelude().particles.size());
   const int count = (spec.n + 1) * (spec.n + 1);
   const auto at = [&](int index) {
-    const int c = index - base;
+    const long long c = static_cast<long long>(index) - base;  // a student's index may be any
     if (c < 0 || c >= count) return "particle " + std::to_string(index);
     return "(" + std::to_string(c % (spec.n + 1)) + ", " + std::to_string(c / (spec.n + 1)) + ")";
   };
@@ -91,7 +92,7 @@ void countSprings(const ClothResult& yours, const ClothResult& ref, const ClothS
     if (m.type != s.type) ++c.mistyped[type + " springs typed " + typeName(m.type)];
     if (std::abs(m.restLength - s.restLength) > 1e-6 * s.restLength)
       c.restLength[type].insert(number(m.restLength / s.restLength));
-    if (std::abs(m.ks - s.ks) > 1e-9 * s.ks || std::abs(m.kd - s.kd) > 1e-9 * s.kd)
+    if (!(std::abs(m.ks - s.ks) <= 1e-6 * s.ks) || !(std::abs(m.kd - s.kd) <= 1e-6 * s.kd))
       c.constants[type].insert("ks = " + number(m.ks) + ", kd = " + number(m.kd) + " where the " +
                                "spec gives ks = " + number(s.ks) + ", kd = " + number(s.kd));
   }
@@ -119,7 +120,9 @@ bool numberedFromZero(const ClothResult& yours, const ClothResult& ref) {
   const auto mine = springsOf(yours), theirs = springsOf(ref);
   if (mine.empty() || mine.size() != theirs.size()) return false;
   for (const auto& [key, s] : mine) {
-    if (theirs.count({key.first + base, key.second + base}) == 0) return false;
+    if (key.second > std::numeric_limits<int>::max() - base ||
+        theirs.count({key.first + base, key.second + base}) == 0)
+      return false;
   }
   return true;
 }
@@ -137,7 +140,7 @@ std::optional<Finding> particlesDiffer(const ClothResult& yours, const ClothResu
   }
   for (std::size_t k = 0; k < ref.particles.size(); ++k) {
     const Particle &a = yours.particles[k], &b = ref.particles[k];
-    if ((a.x - b.x).norm() <= 1e-9 * (1 + b.x.norm()) && std::abs(a.m - b.m) <= 1e-12 * b.m)
+    if ((a.x - b.x).norm() <= 1e-6 * (1 + b.x.norm()) && std::abs(a.m - b.m) <= 1e-6 * b.m)
       continue;
     const std::string place = placeOf({static_cast<int>(k), static_cast<int>(k)}, spec);
     f.measured = "particle " + place.substr(0, place.find('-')) + " at " + vector(a.x) +

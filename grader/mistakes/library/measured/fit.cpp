@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace a6::grader::measured {
 namespace {
@@ -16,9 +17,15 @@ struct Fit {
   std::string key, how;
 };
 
+// |v|, or 0 where v is not finite or its size overflows: a hostile answer sets no scale.
+double sizeOf(const Vec2& v) {
+  const double n = v.norm();
+  return std::isfinite(n) ? n : 0;
+}
+
 double sizeOf(const Part& p) {
   double size = 0;
-  for (const Sample& s : p.samples) size = std::max({size, s.physics.norm(), s.yours.norm()});
+  for (const Sample& s : p.samples) size = std::max({size, sizeOf(s.physics), sizeOf(s.yours)});
   return size;
 }
 
@@ -26,13 +33,14 @@ double sizeOf(const Part& p) {
 // sizes and its own scale, so that a rounding where the physics' is zero stays a rounding.
 double scaleOf(const Sample& s) {
   double terms = 0;
-  for (const Vec2& t : s.terms) terms += t.norm();
-  return std::max({s.physics.norm(), s.yours.norm(), terms, s.scale});
+  for (const Vec2& t : s.terms) terms += sizeOf(t);
+  return std::max({sizeOf(s.physics), sizeOf(s.yours), terms, s.scale});
 }
 
-// Whether a is b at the sample's scale.
+// Whether a is b at the sample's scale (never where either is not finite).
 bool close(const Vec2& a, const Vec2& b, const Sample& s, double floor) {
-  return (a - b).norm() <= kFitTolerance * scaleOf(s) + floor;
+  const double d = (a - b).norm();
+  return std::isfinite(d) && d <= kFitTolerance * scaleOf(s) + floor;
 }
 
 // x rounded to the nearest half when it is that close (an exponent, a weight), else x.
@@ -98,7 +106,7 @@ std::string ratioWords(const Part& part, double c, const std::vector<double>& p)
       const Variable& v = part.variables[k];
       if (p[k] == 0 || (v.coefficient && v.power == 0)) continue;
       if (p[k] == -v.power) {
-        how += ", so it leaves out the factor " + power(v.name, v.power);
+        how += ", so it leaves out the factor " + signedPower(v.name, v.power);
       } else if (v.power != 0) {
         how += ", so it goes with " + signedPower(v.name, v.power + p[k]) +
                " where the physics' goes with " + signedPower(v.name, v.power);
@@ -250,13 +258,18 @@ Fit termFit(const Part& part, double floor) {
   return fit;
 }
 
-// What was measured, plainly: the samples that differ most (at most three).
-std::string measuredWords(const Part& part) {
+// What was measured, plainly: the samples that differ, most first (at most three).
+std::string measuredWords(const Part& part, double floor) {
   std::vector<const Sample*> differ;
-  for (const Sample& s : part.samples) differ.push_back(&s);
-  std::stable_sort(differ.begin(), differ.end(), [](const Sample* x, const Sample* y) {
-    return !((x->yours - x->physics).norm() <= (y->yours - y->physics).norm());
-  });
+  for (const Sample& s : part.samples) {
+    if (!close(s.yours, s.physics, s, floor)) differ.push_back(&s);
+  }
+  const auto off = [](const Sample* s) {  // a NaN sorts first, as the largest
+    const double d = (s->yours - s->physics).norm();
+    return std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
+  };
+  std::stable_sort(differ.begin(), differ.end(),
+                   [&off](const Sample* x, const Sample* y) { return off(x) > off(y); });
   std::string out;
   for (std::size_t i = 0; i < differ.size() && i < 3; ++i) {
     const Sample& s = *differ[i];
@@ -285,7 +298,7 @@ Finding measure(const Part& part) {
     zero = zero && s.yours.norm() <= floor;
     physicsZero = physicsZero && s.physics.norm() <= floor;
   }
-  f.measured = measuredWords(part);
+  f.measured = measuredWords(part, floor);
   if (right) return f.verdict = Verdict::Right, f;
   f.verdict = Verdict::Differs;
   if (finite && zero && !physicsZero)

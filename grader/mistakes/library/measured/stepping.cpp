@@ -99,17 +99,6 @@ Part velocityPart() {
           {}};
 }
 
-Part positionPart() {
-  return {"position",
-          "position update",
-          "x += v dt with the new v",
-          "m",
-          false,
-          {{"dt", false, 1}},
-          {{"the old velocity's v dt"}, {"the step's Δv dt (x moves with the new v)"}},
-          {}};
-}
-
 Part pinnedPart() {
   return {"pinned",
           "step of a pinned particle",
@@ -351,6 +340,17 @@ std::vector<Finding> measureStepping(const Transcript& t) {
   if (right()) f.push_back(measure(secondStepPart(t)));
   if (right()) f.push_back(measure(advancePart(t)));
   return f;
+}
+
+Part positionPart() {
+  return {"position",
+          "position update",
+          "x += v dt with the new v",
+          "m",
+          false,
+          {{"dt", false, 1}},
+          {{"the old velocity's v dt"}, {"the step's Δv dt (x moves with the new v)"}},
+          {}};
 }
 
 }  // namespace a6::grader::measured

@@ -27,6 +27,10 @@ std::vector<Finding> measureJoints(const Transcript& t);
 void designImplicit(std::vector<Designed>& out);  // task 7's step
 std::vector<Finding> measureImplicit(const Transcript& t);
 
+/// The position update x += v dt with the new v (tasks 3, 5 and 7): Δx as the old velocity's
+/// v dt and the step's own Δv dt.
+Part positionPart();
+
 /// The answers to the requests of kind R labelled `label`, in order, each with its request.
 template <class R>
 std::vector<ExchangeOf<R>> answersTo(const Transcript& t, const std::string& label) {
